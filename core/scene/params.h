@@ -1,0 +1,64 @@
+// One parameter list per description struct (DESIGN principle 8). Each struct
+// has a free function `visit_params(Desc&, Visitor&)` that names every editable
+// field once with its range, default and doc; JSON reading and writing,
+// validation messages and the editor's widgets are all visitors over it.
+#pragma once
+
+#include <limits>
+#include <span>
+#include <string_view>
+
+namespace inkray {
+
+enum class ParamKind {
+  number,     // float
+  integer,    // int
+  toggle,     // bool
+  point,      // Point3
+  direction,  // Vec3, normalised when used
+  vector,     // Vec3 (scale, edge vectors)
+  color,      // Color, linear RGB
+  color_input,  // ColorInput: constant colour, image texture or checker
+  text,       // std::string (names, references)
+  path,       // std::string, a file path relative to the scene file
+  choice,     // an enum with a name table
+};
+
+struct Param {
+  std::string_view name;
+  std::string_view doc;
+  ParamKind kind = ParamKind::number;
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  std::span<const std::string_view> choices = {};  // names for ParamKind::choice, indexed by enum value
+  bool required = false;                           // a JSON reader reports it when absent
+};
+
+// Helpers to keep parameter lists short and readable.
+constexpr Param number(std::string_view name, double min, double max, std::string_view doc) {
+  return {name, doc, ParamKind::number, min, max};
+}
+constexpr Param integer(std::string_view name, double min, double max, std::string_view doc) {
+  return {name, doc, ParamKind::integer, min, max};
+}
+constexpr Param toggle(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::toggle}; }
+constexpr Param point(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::point}; }
+constexpr Param direction(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::direction}; }
+constexpr Param vector(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::vector}; }
+constexpr Param color(std::string_view name, double max, std::string_view doc) {
+  return {name, doc, ParamKind::color, 0.0, max};
+}
+constexpr Param color_input(std::string_view name, std::string_view doc) {
+  return {name, doc, ParamKind::color_input, 0.0, 1.0};
+}
+constexpr Param text(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::text}; }
+constexpr Param path(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::path}; }
+constexpr Param choice(std::string_view name, std::span<const std::string_view> names, std::string_view doc) {
+  return {name, doc, ParamKind::choice, 0, double(names.size() - 1), names};
+}
+constexpr Param required(Param p) {
+  p.required = true;
+  return p;
+}
+
+}  // namespace inkray
