@@ -1,0 +1,149 @@
+#include "app/render_cli.h"
+
+#include "core/film/film.h"
+#include "core/film/image_io.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+namespace inkray {
+
+const char* const kRenderCliHelp = R"(inkray-render: render an inkray scene without a window.
+
+usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
+
+  -o, --output FILE     image to write; .png is 8-bit sRGB, .pfm and .exr are linear float
+  --spp N               samples per pixel (default: the scene's render.spp)
+  --time SECONDS        stop after this much render time (default: the scene's render.time_limit;
+                        0 means no limit); the render stops at whichever of --spp and --time comes first
+  --threads N           worker threads (default: one per hardware thread)
+  --width W --height H  override the scene's resolution (the aspect ratio follows)
+  --seed S              seed of every random decision (default: the scene's render.seed)
+  --aov NAME=FILE       also write a first-hit AOV; NAME is one of albedo, normal, depth, object_id,
+                        material_id; may be repeated
+  -q, --quiet           no progress bar
+  -h, --help            this text
+
+The same scene, seed and sample count give the same image at any thread count.
+After the render a table lists, per pass checkpoint, the samples per pixel, the elapsed
+seconds and the estimated relative error (from the difference of even and odd passes).
+Exit status: 0 on success, 1 on a scene or output error, 2 on bad arguments.
+)";
+
+namespace {
+
+template <class T>
+bool parse_number(std::string_view text, T* out) {
+  const char* end = text.data() + text.size();
+  if constexpr (std::is_floating_point_v<T>) {
+    // std::from_chars for double is available in GCC 12.
+    auto [ptr, ec] = std::from_chars(text.data(), end, *out);
+    return ec == std::errc() && ptr == end && std::isfinite(*out);
+  } else {
+    auto [ptr, ec] = std::from_chars(text.data(), end, *out);
+    return ec == std::errc() && ptr == end;
+  }
+}
+
+}  // namespace
+
+std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* argv, std::string* error) {
+  RenderCliOptions o;
+  auto value_of = [&](int& i, std::string_view flag) -> std::optional<std::string_view> {
+    if (i + 1 >= argc) {
+      *error = std::string(flag) + ": missing value";
+      return std::nullopt;
+    }
+    return std::string_view(argv[++i]);
+  };
+  auto int_option = [&](int& i, std::string_view flag, long lo, long hi, std::optional<int>* out) {
+    const auto v = value_of(i, flag);
+    if (!v) return false;
+    long n = 0;
+    if (!parse_number(*v, &n) || n < lo || n > hi) {
+      *error = std::string(flag) + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+               "], got \"" + std::string(*v) + "\"";
+      return false;
+    }
+    *out = int(n);
+    return true;
+  };
+
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      o.help = true;
+      return o;
+    } else if (arg == "-q" || arg == "--quiet") {
+      o.quiet = true;
+    } else if (arg == "-o" || arg == "--output") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      o.output = std::string(*v);
+    } else if (arg == "--spp") {
+      if (!int_option(i, arg, 1, 1 << 20, &o.spp)) return std::nullopt;
+    } else if (arg == "--threads") {
+      if (!int_option(i, arg, 1, 1024, &o.threads)) return std::nullopt;
+    } else if (arg == "--width") {
+      if (!int_option(i, arg, 1, 16384, &o.width)) return std::nullopt;
+    } else if (arg == "--height") {
+      if (!int_option(i, arg, 1, 16384, &o.height)) return std::nullopt;
+    } else if (arg == "--seed") {
+      if (!int_option(i, arg, 0, 2147483647, &o.seed)) return std::nullopt;
+    } else if (arg == "--time") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      double t = 0.0;
+      if (!parse_number(*v, &t) || t < 0.0 || t > 1e7) {
+        *error = "--time: expected seconds in [0, 1e7], got \"" + std::string(*v) + "\"";
+        return std::nullopt;
+      }
+      o.time_seconds = t;
+    } else if (arg == "--aov") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      const size_t eq = v->find('=');
+      const std::string_view name = v->substr(0, eq);
+      if (eq == std::string_view::npos || eq + 1 == v->size() || !aov_from_name(name)) {
+        *error = "--aov: expected NAME=FILE with NAME one of albedo, normal, depth, object_id, material_id; got \"" +
+                 std::string(*v) + "\"";
+        return std::nullopt;
+      }
+      o.aovs.push_back({std::string(name), std::string(v->substr(eq + 1))});
+    } else if (!arg.empty() && arg[0] == '-') {
+      *error = "unknown option \"" + std::string(arg) + "\" (see --help)";
+      return std::nullopt;
+    } else if (o.scene.empty()) {
+      o.scene = std::string(arg);
+    } else {
+      *error = "unexpected argument \"" + std::string(arg) + "\": only one scene file is rendered";
+      return std::nullopt;
+    }
+  }
+  if (o.scene.empty()) {
+    *error = "no scene file given (usage: inkray-render SCENE.json -o OUT.png; see --help)";
+    return std::nullopt;
+  }
+  if (o.output.empty()) {
+    *error = "no output file given: add -o OUT.png (or .pfm, .exr)";
+    return std::nullopt;
+  }
+  std::vector<std::filesystem::path> outputs = {o.output};
+  for (const auto& a : o.aovs) outputs.push_back(a.file);
+  for (const auto& file : outputs) {
+    if (image_format_of(file) == ImageFormat::unknown) {
+      *error = file.string() + ": unknown image format (expected .png, .pfm or .exr)";
+      return std::nullopt;
+    }
+    const auto dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) {
+      *error = file.string() + ": folder " + dir.string() + " does not exist";
+      return std::nullopt;
+    }
+  }
+  return o;
+}
+
+}  // namespace inkray

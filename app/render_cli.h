@@ -1,0 +1,30 @@
+// Command-line options of inkray-render and their parsing.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace inkray {
+
+struct AovOutput {
+  std::string name;
+  std::filesystem::path file;
+};
+
+struct RenderCliOptions {
+  std::filesystem::path scene;
+  std::filesystem::path output;
+  std::optional<int> spp, threads, width, height, seed;
+  std::optional<double> time_seconds;
+  std::vector<AovOutput> aovs;
+  bool quiet = false;
+  bool help = false;
+};
+
+// Returns nullopt and sets *error to one line on bad arguments.
+std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* argv, std::string* error);
+extern const char* const kRenderCliHelp;
+
+}  // namespace inkray

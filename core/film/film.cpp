@@ -1,0 +1,111 @@
+#include "core/film/film.h"
+
+#include <cmath>
+
+namespace inkray {
+
+std::optional<Aov> aov_from_name(std::string_view name) {
+  for (size_t i = 0; i < kAovNames.size(); ++i)
+    if (kAovNames[i] == name) return Aov(i);
+  return std::nullopt;
+}
+
+Film::Film(int width, int height, AovSet aovs) : width_(width), height_(height), aovs_(aovs) {
+  const size_t n = size_t(width) * size_t(height);
+  for (int h = 0; h < 2; ++h) {
+    sum_[h].assign(n, Color(0.f));
+    count_[h].assign(n, 0);
+  }
+  // Pay only for what is asked for (DESIGN principle 4).
+  if (aovs.has(Aov::albedo)) albedo_sum_.assign(n, Color(0.f));
+  if (aovs.has(Aov::normal)) normal_sum_.assign(n, Color(0.f));
+  if (aovs.has(Aov::depth)) depth_sum_.assign(n, 0.f);
+  if (aovs.has(Aov::albedo) || aovs.has(Aov::normal) || aovs.has(Aov::depth)) hit_count_.assign(n, 0);
+  if (aovs.has(Aov::object_id)) object_id_.assign(n, -2);
+  if (aovs.has(Aov::material_id)) material_id_.assign(n, -2);
+}
+
+void Film::clear() {
+  Film fresh(width_, height_, aovs_);
+  sum_ = std::move(fresh.sum_);
+  count_ = std::move(fresh.count_);
+  albedo_sum_ = std::move(fresh.albedo_sum_);
+  normal_sum_ = std::move(fresh.normal_sum_);
+  depth_sum_ = std::move(fresh.depth_sum_);
+  hit_count_ = std::move(fresh.hit_count_);
+  object_id_ = std::move(fresh.object_id_);
+  material_id_ = std::move(fresh.material_id_);
+  nonfinite_ = 0;
+}
+
+void Film::add_sample(int x, int y, uint32_t pass, const Color& radiance) {
+  const size_t i = index(x, y);
+  if (!is_finite(radiance)) {
+    nonfinite_.fetch_add(1, std::memory_order_relaxed);
+    return;
+  }
+  const uint32_t half = pass & 1u;
+  ++count_[half][i];
+  sum_[half][i] += radiance;
+}
+
+void Film::add_first_hit(int x, int y, const FirstHit& hit) {
+  const size_t i = index(x, y);
+  // Ids are not averaged: the first sample's id stands for the pixel.
+  if (!object_id_.empty() && object_id_[i] == -2) object_id_[i] = hit.object;
+  if (!material_id_.empty() && material_id_[i] == -2) material_id_[i] = hit.material;
+  if (hit_count_.empty() || hit.object < 0) return;
+  ++hit_count_[i];
+  if (!albedo_sum_.empty()) albedo_sum_[i] += hit.albedo;
+  if (!normal_sum_.empty()) normal_sum_[i] += hit.normal;
+  if (!depth_sum_.empty()) depth_sum_[i] += hit.depth;
+}
+
+uint32_t Film::samples_at(int x, int y) const { return count_[0][index(x, y)] + count_[1][index(x, y)]; }
+
+RgbImage Film::resolve() const {
+  RgbImage img{width_, height_, std::vector<Color>(size_t(width_) * size_t(height_), Color(0.f))};
+  for (size_t i = 0; i < img.pixels.size(); ++i) {
+    const uint32_t n = count_[0][i] + count_[1][i];
+    if (n) img.pixels[i] = (sum_[0][i] + sum_[1][i]) / float(n);
+  }
+  return img;
+}
+
+RgbImage Film::resolve_aov(Aov aov) const {
+  RgbImage img{width_, height_, std::vector<Color>(size_t(width_) * size_t(height_), Color(0.f))};
+  if (!aovs_.has(aov)) return img;
+  for (size_t i = 0; i < img.pixels.size(); ++i) {
+    const float hits = hit_count_.empty() ? 0.f : float(hit_count_[i]);
+    switch (aov) {
+      case Aov::albedo: img.pixels[i] = hits ? albedo_sum_[i] / hits : Color(0.f); break;
+      case Aov::normal: {
+        const Vec3 n = normal_sum_[i];
+        img.pixels[i] = glm::length(n) > 0.f ? glm::normalize(n) : Vec3(0.f);
+        break;
+      }
+      case Aov::depth: img.pixels[i] = Color(hits ? depth_sum_[i] / hits : 0.f); break;
+      case Aov::object_id: img.pixels[i] = Color(float(object_id_[i] < -1 ? -1 : object_id_[i])); break;
+      case Aov::material_id: img.pixels[i] = Color(float(material_id_[i] < -1 ? -1 : material_id_[i])); break;
+    }
+  }
+  return img;
+}
+
+double Film::estimated_relative_error() const {
+  double diff2 = 0.0, lum = 0.0;
+  size_t pixels = 0;
+  for (size_t i = 0; i < sum_[0].size(); ++i) {
+    const uint32_t na = count_[0][i], nb = count_[1][i];
+    if (!na || !nb) continue;
+    const double a = luminance(sum_[0][i]) / na, b = luminance(sum_[1][i]) / nb;
+    // Var(mean of both) ~ (a - b)^2 / 4 for equal halves.
+    diff2 += (a - b) * (a - b) * 0.25;
+    lum += 0.5 * (a + b);
+    ++pixels;
+  }
+  if (!pixels || lum <= 0.0) return 0.0;
+  return std::sqrt(diff2 / double(pixels)) / (lum / double(pixels));
+}
+
+}  // namespace inkray

@@ -1,0 +1,198 @@
+#include "core/geometry/embree_scene.h"
+
+#include "core/math/float_error.h"
+
+#include <embree3/rtcore.h>
+
+#include <cstdio>
+#include <mutex>
+#include <stdexcept>
+
+namespace inkray {
+namespace {
+
+// One Embree device for the process: creating one costs milliseconds and
+// starts the worker threads Embree builds BVHs with.
+RTCDevice shared_device() {
+  static RTCDevice device = [] {
+    RTCDevice d = rtcNewDevice(nullptr);
+    if (!d) throw std::runtime_error("Embree: could not create a device");
+    rtcSetDeviceErrorFunction(
+        d, [](void*, RTCError code, const char* msg) { std::fprintf(stderr, "Embree error %d: %s\n", int(code), msg); },
+        nullptr);
+    return d;
+  }();
+  return device;
+}
+
+void sphere_bounds(const RTCBoundsFunctionArguments* args) {
+  const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
+  Point3 lo, hi;
+  sphere->bounds(&lo, &hi);
+  *args->bounds_o = {lo.x, lo.y, lo.z, 0.f, hi.x, hi.y, hi.z, 0.f};
+}
+
+// We only call the single-ray API, so callbacks see N == 1.
+void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
+  auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+  const Ray ray{{rh->ray.org_x, rh->ray.org_y, rh->ray.org_z}, {rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z}};
+  const auto t = sphere->intersect(ray, rh->ray.tnear, rh->ray.tfar);
+  if (!t) return;
+  rh->ray.tfar = *t;
+  rh->hit.u = rh->hit.v = 0.f;
+  rh->hit.Ng_x = rh->hit.Ng_y = rh->hit.Ng_z = 0.f;
+  rh->hit.geomID = args->geomID;
+  rh->hit.primID = args->primID;
+  rh->hit.instID[0] = args->context->instID[0];
+}
+
+void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
+  auto* r = reinterpret_cast<RTCRay*>(args->ray);
+  const Ray ray{{r->org_x, r->org_y, r->org_z}, {r->dir_x, r->dir_y, r->dir_z}};
+  if (sphere->intersect(ray, r->tnear, r->tfar)) r->tfar = -kInfinity;
+}
+
+RTCRay to_rtc(const Ray& ray, float t_max) {
+  RTCRay r{};
+  r.org_x = ray.o.x;
+  r.org_y = ray.o.y;
+  r.org_z = ray.o.z;
+  r.dir_x = ray.d.x;
+  r.dir_y = ray.d.y;
+  r.dir_z = ray.d.z;
+  r.tnear = 0.f;
+  r.tfar = t_max;
+  r.mask = 0xffffffffu;
+  r.flags = 0;
+  return r;
+}
+
+SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit, const Ray& ray) {
+  const uint32_t i0 = mesh.indices[3 * hit.prim], i1 = mesh.indices[3 * hit.prim + 1],
+                 i2 = mesh.indices[3 * hit.prim + 2];
+  const Point3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
+  const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.f - b1 - b2;
+  SurfaceInteraction si;
+  si.t = hit.t;
+  // Recompute p from barycentrics rather than o + t d: its error is bounded by
+  // the vertices' magnitudes, not by the ray's length (pbrt-v4 6.8.5).
+  si.p = b0 * p0 + b1 * p1 + b2 * p2;
+  // pbrt-v4 bounds the error per axis by gamma(7) sum |b_i p_i|, relying on its
+  // own intersector to reject t <= its error. Embree accepts t = 0, so a point
+  // exact on an axis-aligned plane (zero error along its normal) would re-hit
+  // it: use the largest axis bound on every axis.
+  si.p_error = Vec3(gamma_bound(7) * max_component(glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2)));
+  const Vec3 n = glm::cross(p1 - p0, p2 - p0);
+  const float len = glm::length(n);
+  si.ng = len > 0.f ? n / len : -glm::normalize(ray.d);
+  si.ns = si.ng;
+  if (!mesh.normals.empty()) {
+    const Vec3 ns = b0 * mesh.normals[i0] + b1 * mesh.normals[i1] + b2 * mesh.normals[i2];
+    const float ns_len = glm::length(ns);
+    if (ns_len > 0.f) {
+      si.ns = ns / ns_len;
+      // Keep the geometric normal on the side the shading normal says is outside.
+      if (glm::dot(si.ng, si.ns) < 0.f) si.ng = -si.ng;
+    }
+  }
+  si.uv = mesh.uvs.empty() ? Vec2(b1, b2) : b0 * mesh.uvs[i0] + b1 * mesh.uvs[i1] + b2 * mesh.uvs[i2];
+  si.prim = hit.prim;
+  return si;
+}
+
+}  // namespace
+
+struct EmbreeScene::Impl {
+  RTCScene scene = nullptr;
+  bool committed = false;
+};
+
+EmbreeScene::EmbreeScene() : impl_(std::make_unique<Impl>()) {
+  impl_->scene = rtcNewScene(shared_device());
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+}
+
+EmbreeScene::~EmbreeScene() {
+  if (impl_ && impl_->scene) rtcReleaseScene(impl_->scene);
+}
+
+uint32_t EmbreeScene::add(Shape shape) {
+  if (impl_->committed) throw std::logic_error("EmbreeScene::add after commit");
+  shapes_.push_back(std::move(shape));
+  return uint32_t(shapes_.size() - 1);
+}
+
+void EmbreeScene::commit() {
+  // Geometries are created here, once every shape has its final address.
+  RTCDevice device = shared_device();
+  for (uint32_t id = 0; id < shapes_.size(); ++id) {
+    RTCGeometry geom = nullptr;
+    if (auto* mesh = std::get_if<TriangleMesh>(&shapes_[id])) {
+      geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+      rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->positions.data(), 0,
+                                 sizeof(Point3), mesh->vertex_count());
+      rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh->indices.data(), 0,
+                                 3 * sizeof(uint32_t), mesh->triangle_count());
+    } else {
+      auto& sphere = std::get<Sphere>(shapes_[id]);
+      geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+      rtcSetGeometryUserPrimitiveCount(geom, 1);
+      rtcSetGeometryUserData(geom, &sphere);
+      rtcSetGeometryBoundsFunction(geom, sphere_bounds, nullptr);
+      rtcSetGeometryIntersectFunction(geom, sphere_intersect);
+      rtcSetGeometryOccludedFunction(geom, sphere_occluded);
+    }
+    rtcCommitGeometry(geom);
+    rtcAttachGeometryByID(impl_->scene, geom, id);
+    rtcReleaseGeometry(geom);
+  }
+  rtcCommitScene(impl_->scene);
+  impl_->committed = true;
+}
+
+bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh{};
+  rh.ray = to_rtc(ray, t_max);
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  hit->t = rh.ray.tfar;
+  hit->geometry = rh.hit.geomID;
+  hit->prim = rh.hit.primID;
+  hit->barycentric = {rh.hit.u, rh.hit.v};
+  return true;
+}
+
+bool EmbreeScene::occluded(const Ray& ray, float t_max) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay r = to_rtc(ray, t_max);
+  rtcOccluded1(impl_->scene, &context, &r);
+  return r.tfar < 0.f;
+}
+
+SurfaceInteraction EmbreeScene::interaction(const Ray& ray, const Hit& hit) const {
+  const Shape& shape = shapes_[hit.geometry];
+  SurfaceInteraction si = std::holds_alternative<TriangleMesh>(shape)
+                              ? triangle_interaction(std::get<TriangleMesh>(shape), hit, ray)
+                              : std::get<Sphere>(shape).interaction(ray, hit.t);
+  si.object = hit.geometry;
+  return si;
+}
+
+void EmbreeScene::bounds(Point3* lo, Point3* hi) const {
+  RTCBounds b;
+  rtcGetSceneBounds(impl_->scene, &b);
+  *lo = {b.lower_x, b.lower_y, b.lower_z};
+  *hi = {b.upper_x, b.upper_y, b.upper_z};
+}
+
+}  // namespace inkray

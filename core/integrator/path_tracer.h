@@ -1,0 +1,19 @@
+// The path tracer: an iterative loop with next-event estimation, multiple
+// importance sampling (power heuristic) and Russian roulette.
+#pragma once
+
+#include "core/film/film.h"
+#include "core/sampling/sampler.h"
+#include "core/scene/render_scene.h"
+
+namespace inkray {
+
+struct PathResult {
+  Color radiance{0.f};
+  uint32_t rays = 0;  // traced rays (camera, bounce and shadow), for statistics
+};
+
+// Radiance along a camera ray. `first_hit` is filled when not null.
+PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, Sampler& sampler, FirstHit* first_hit);
+
+}  // namespace inkray

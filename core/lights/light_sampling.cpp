@@ -1,0 +1,198 @@
+#include "core/lights/light_sampling.h"
+
+#include "core/math/float_error.h"
+#include "core/sampling/warp.h"
+
+#include <cmath>
+
+namespace inkray {
+namespace {
+
+LightSample delta_sample(const LightReference& ref, const Point3& light_p, const Color& radiance) {
+  LightSample s;
+  const Vec3 d = light_p - ref.p;
+  s.wi = glm::normalize(d);
+  s.radiance = radiance;
+  s.pdf = 1.f;
+  s.is_delta = true;
+  s.shadow_ray = spawn_ray_to(ref.p, ref.p_error, ref.n, light_p, Vec3(0.f), Vec3(0.f));
+  s.shadow_t_max = kShadowTMax;
+  return s;
+}
+
+// Completes a sample that reached a point on an emitting surface.
+std::optional<LightSample> surface_sample(const RenderScene& scene, const LightReference& ref, uint32_t object,
+                                          const SurfaceInteraction& on_light, float pdf_solid_angle) {
+  const Vec3 d = on_light.p - ref.p;
+  const float dist2 = glm::dot(d, d);
+  if (!(dist2 > 0.f) || !(pdf_solid_angle > 0.f) || !std::isfinite(pdf_solid_angle)) return std::nullopt;
+  LightSample s;
+  s.wi = d / std::sqrt(dist2);
+  s.radiance = material_emission(scene.material_of(object), on_light.uv, glm::dot(-s.wi, on_light.ng));
+  if (is_black(s.radiance)) return std::nullopt;
+  s.pdf = pdf_solid_angle;
+  s.shadow_ray = spawn_ray_to(ref.p, ref.p_error, ref.n, on_light.p, on_light.p_error, on_light.ng);
+  s.shadow_t_max = kShadowTMax;
+  return s;
+}
+
+float area_to_solid_angle(float pdf_area, const Point3& ref, const SurfaceInteraction& on_light) {
+  const Vec3 d = on_light.p - ref;
+  const float dist2 = glm::dot(d, d);
+  const float cos_light = std::abs(glm::dot(on_light.ng, d)) / std::sqrt(dist2);
+  return cos_light > 0.f ? pdf_area * dist2 / cos_light : 0.f;
+}
+
+// Cosine of the half-angle the sphere subtends from ref; 0 when ref is inside.
+float sphere_cos_max(const SphereAreaLight& s, const Point3& ref) {
+  const float dist2 = glm::dot(ref - s.center, ref - s.center);
+  const float r2 = s.radius * s.radius;
+  return dist2 > r2 * 1.0001f ? std::sqrt(std::max(0.f, 1.f - r2 / dist2)) : 0.f;
+}
+
+SurfaceInteraction mesh_point(const TriangleMesh& mesh, size_t tri, Vec2 b) {
+  const uint32_t i0 = mesh.indices[3 * tri], i1 = mesh.indices[3 * tri + 1], i2 = mesh.indices[3 * tri + 2];
+  const float b0 = b.x, b1 = b.y, b2 = 1.f - b.x - b.y;
+  const Point3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
+  SurfaceInteraction si;
+  si.p = b0 * p0 + b1 * p1 + b2 * p2;
+  si.p_error = Vec3(gamma_bound(7) * max_component(glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2)));
+  si.ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+  if (!mesh.normals.empty()) {
+    const Vec3 ns = b0 * mesh.normals[i0] + b1 * mesh.normals[i1] + b2 * mesh.normals[i2];
+    if (glm::dot(ns, si.ng) < 0.f) si.ng = -si.ng;
+  }
+  si.ns = si.ng;
+  si.uv = mesh.uvs.empty() ? Vec2(b1, b2) : b0 * mesh.uvs[i0] + b1 * mesh.uvs[i1] + b2 * mesh.uvs[i2];
+  si.prim = uint32_t(tri);
+  return si;
+}
+
+std::optional<LightSample> sample_mesh(const RenderScene& scene, const MeshAreaLight& l, const LightReference& ref,
+                                       Vec2 u) {
+  const auto& mesh = std::get<TriangleMesh>(scene.geometry.shape(l.object));
+  float pmf = 0.f;
+  const size_t tri = l.triangles.sample(u.x, &pmf, &u.x);
+  SurfaceInteraction on_light = mesh_point(mesh, tri, sample_uniform_triangle(u));
+  on_light.object = l.object;
+  return surface_sample(scene, ref, l.object, on_light, area_to_solid_angle(1.f / l.area, ref.p, on_light));
+}
+
+std::optional<LightSample> sample_sphere(const RenderScene& scene, const SphereAreaLight& l,
+                                         const LightReference& ref, Vec2 u) {
+  const auto& sphere = std::get<Sphere>(scene.geometry.shape(l.object));
+  const float cos_max = sphere_cos_max(l, ref.p);
+  Vec3 dir_to_point;  // from the centre, in world space
+  float pdf = 0.f;
+  if (cos_max > 0.f) {
+    // Uniform in the cone of directions the sphere subtends; then find the
+    // point that direction reaches (pbrt-v4 Sphere::Sample by solid angle).
+    const Vec3 to_center = l.center - ref.p;
+    const float dc = glm::length(to_center);
+    const Frame frame = Frame::from_z(to_center / dc);
+    const Vec3 w = frame.to_world(sample_uniform_cone(u, cos_max));
+    const float cos_t = glm::dot(w, to_center / dc);
+    const float sin2_t = std::max(0.f, 1.f - cos_t * cos_t);
+    // Distance along w to the near intersection, clamped at the tangent point.
+    const float t = dc * cos_t - safe_sqrt(l.radius * l.radius - dc * dc * sin2_t);
+    dir_to_point = glm::normalize(ref.p + t * w - l.center);
+    pdf = uniform_cone_pdf(cos_max);
+  } else {
+    dir_to_point = sample_uniform_sphere(u);
+  }
+  // Evaluate the sphere at the chosen point through its own reprojection, so
+  // position error and uv match what a traced ray would find.
+  const Point3 target = l.center + l.radius * dir_to_point;
+  const Ray probe{ref.p, target - ref.p};
+  SurfaceInteraction on_light = sphere.interaction(probe, 1.f);
+  on_light.object = l.object;
+  if (cos_max <= 0.f) pdf = area_to_solid_angle(1.f / (4.f * kPi * l.radius * l.radius), ref.p, on_light);
+  return surface_sample(scene, ref, l.object, on_light, pdf);
+}
+
+std::optional<LightSample> sample_environment(const EnvironmentLight& env, const LightReference& ref, Vec2 u) {
+  LightSample s;
+  s.wi = sample_uniform_sphere(u);
+  s.radiance = env.radiance(s.wi);
+  if (is_black(s.radiance)) return std::nullopt;
+  s.pdf = uniform_sphere_pdf();
+  s.shadow_ray = spawn_ray(ref.p, ref.p_error, ref.n, s.wi);
+  s.shadow_t_max = kInfinity;
+  return s;
+}
+
+}  // namespace
+
+std::optional<LightSample> sample_light(const RenderScene& scene, const Light& light, const LightReference& ref,
+                                        Vec2 u) {
+  return std::visit(
+      [&](const auto& l) -> std::optional<LightSample> {
+        using T = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<T, PointLight>) {
+          const float dist2 = glm::dot(l.position - ref.p, l.position - ref.p);
+          return delta_sample(ref, l.position, l.intensity / dist2);
+        } else if constexpr (std::is_same_v<T, SpotLight>) {
+          const Vec3 d = ref.p - l.position;
+          const float dist2 = glm::dot(d, d);
+          const float cos_t = glm::dot(d, l.frame.z) / std::sqrt(dist2);
+          const float falloff = glm::smoothstep(l.cos_total, l.cos_falloff, cos_t);
+          if (falloff <= 0.f) return std::nullopt;
+          return delta_sample(ref, l.position, l.intensity * falloff / dist2);
+        } else if constexpr (std::is_same_v<T, DirectionalLight>) {
+          LightSample s;
+          s.wi = l.to_light;
+          s.radiance = l.irradiance;
+          s.pdf = 1.f;
+          s.is_delta = true;
+          s.shadow_ray = spawn_ray(ref.p, ref.p_error, ref.n, s.wi);
+          s.shadow_t_max = kInfinity;
+          return s;
+        } else if constexpr (std::is_same_v<T, MeshAreaLight>) {
+          return sample_mesh(scene, l, ref, u);
+        } else if constexpr (std::is_same_v<T, SphereAreaLight>) {
+          return sample_sphere(scene, l, ref, u);
+        } else {
+          return sample_environment(l, ref, u);
+        }
+      },
+      light);
+}
+
+float light_pdf(const RenderScene& /*scene*/, const Light& light, const LightReference& ref, const Vec3& /*wi*/,
+                const SurfaceInteraction& on_light) {
+  if (const auto* m = std::get_if<MeshAreaLight>(&light)) return area_to_solid_angle(1.f / m->area, ref.p, on_light);
+  if (const auto* s = std::get_if<SphereAreaLight>(&light)) {
+    const float cos_max = sphere_cos_max(*s, ref.p);
+    if (cos_max > 0.f) return uniform_cone_pdf(cos_max);
+    return area_to_solid_angle(1.f / (4.f * kPi * s->radius * s->radius), ref.p, on_light);
+  }
+  if (std::holds_alternative<EnvironmentLight>(light)) return uniform_sphere_pdf();
+  return 0.f;
+}
+
+float light_power(const RenderScene& scene, const Light& light) {
+  return std::visit(
+      [&](const auto& l) -> float {
+        using T = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<T, PointLight>) {
+          return 4.f * kPi * luminance(l.intensity);
+        } else if constexpr (std::is_same_v<T, SpotLight>) {
+          return 2.f * kPi * luminance(l.intensity) * (1.f - 0.5f * (l.cos_falloff + l.cos_total));
+        } else if constexpr (std::is_same_v<T, DirectionalLight>) {
+          return kPi * sqr(l.scene_radius) * luminance(l.irradiance);
+        } else if constexpr (std::is_same_v<T, MeshAreaLight> || std::is_same_v<T, SphereAreaLight>) {
+          const Material& m = scene.material_of(l.object);
+          const bool two_sided = std::get<EmissiveMaterial>(m).two_sided;
+          float area = 0.f;
+          if constexpr (std::is_same_v<T, MeshAreaLight>) area = l.area;
+          else area = 4.f * kPi * l.radius * l.radius;
+          return kPi * (two_sided ? 2.f : 1.f) * area * luminance(material_average_emission(m));
+        } else {
+          const Color avg = (l.zenith + 2.f * l.horizon + l.nadir) * 0.25f;
+          return 4.f * kPi * kPi * sqr(l.scene_radius) * luminance(avg);
+        }
+      },
+      light);
+}
+
+}  // namespace inkray

@@ -1,0 +1,28 @@
+// A final render: passes until the sample count or the time limit is reached,
+// recording error against time after every pass.
+#pragma once
+
+#include "core/render/render_session.h"
+
+#include <functional>
+#include <vector>
+
+namespace inkray {
+
+struct BatchLimits {
+  int spp = 64;
+  double time_seconds = 0.0;  // 0 means no limit
+};
+
+struct PassRecord {
+  uint32_t pass = 0;
+  uint32_t spp = 0;
+  double elapsed_seconds = 0.0;
+  double relative_error = 0.0;
+};
+
+// Renders into the session's film; on_pass runs after every completed pass.
+std::vector<PassRecord> render_batch(RenderSession& session, const BatchLimits& limits,
+                                     const std::function<void(const RenderStats&)>& on_pass = {});
+
+}  // namespace inkray

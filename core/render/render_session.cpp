@@ -1,0 +1,81 @@
+#include "core/render/render_session.h"
+
+#include "core/integrator/path_tracer.h"
+
+#include <cmath>
+
+namespace inkray {
+namespace {
+
+// Offset of a sample from the pixel centre, importance-sampled from the pixel
+// filter so every sample has weight 1 and stays in its own pixel's sums.
+Vec2 filter_offset(const RenderSettings& settings, Vec2 u) {
+  const float r = settings.filter_radius;
+  if (settings.filter == PixelFilter::box) return (2.f * u - Vec2(1.f)) * r;
+  // Gaussian with sigma = r / 3 (Box-Muller); the rare tail beyond r is clamped.
+  const float sigma = r / 3.f;
+  const float radius = sigma * std::sqrt(-2.f * std::log(std::max(1.f - u.x, 1e-12f)));
+  const float phi = 2.f * kPi * u.y;
+  return glm::clamp(Vec2(radius * std::cos(phi), radius * std::sin(phi)), Vec2(-r), Vec2(r));
+}
+
+}  // namespace
+
+RenderSession::RenderSession(int threads) : pool_(threads), worker_rays_(size_t(pool_.size()), 0) {}
+
+void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet aovs) {
+  scene_ = std::move(scene);
+  film_ = std::make_unique<Film>(scene_->settings.width, scene_->settings.height, aovs);
+  stats_ = {};
+}
+
+bool RenderSession::render_pass() {
+  cancelled_.store(false, std::memory_order_relaxed);
+  const auto start = std::chrono::steady_clock::now();
+  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
+  const int tiles_y = (film_->height() + kTileSize - 1) / kTileSize;
+  const uint32_t pass = stats_.passes;
+  std::fill(worker_rays_.begin(), worker_rays_.end(), 0);
+  pool_.parallel_for(tiles_x * tiles_y, [&](int tile, int worker) {
+    if (!cancelled_.load(std::memory_order_relaxed)) render_tile(tile, worker, pass);
+  });
+  stats_.elapsed_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (cancelled_.load(std::memory_order_relaxed)) return false;
+  ++stats_.passes;
+  ++stats_.spp;
+  for (uint64_t r : worker_rays_) stats_.rays += r;
+  stats_.paths += uint64_t(film_->width()) * uint64_t(film_->height());
+  stats_.nonfinite_samples = film_->nonfinite_samples();
+  stats_.relative_error = stats_.passes >= 2 ? film_->estimated_relative_error() : 0.0;
+  return true;
+}
+
+void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
+  const RenderScene& scene = *scene_;
+  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
+  const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+  const int x1 = std::min(x0 + kTileSize, film_->width()), y1 = std::min(y0 + kTileSize, film_->height());
+  const bool want_first_hit = film_->aovs().any();
+  const float clamp = scene.settings.clamp;
+  const uint32_t seed = uint32_t(scene.settings.seed);
+  uint64_t rays = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      Sampler sampler(uint32_t(x), uint32_t(y), pass, seed);
+      const Vec2 film_pos = Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_2d());
+      const Ray ray = scene.camera.generate_ray(film_pos, sampler.get_2d());
+      FirstHit first_hit;
+      PathResult r = trace_path(scene, ray, sampler, want_first_hit ? &first_hit : nullptr);
+      rays += r.rays;
+      if (clamp > 0.f) {
+        const float lum = luminance(r.radiance);
+        if (lum > clamp) r.radiance *= clamp / lum;
+      }
+      film_->add_sample(x, y, pass, r.radiance);
+      if (want_first_hit) film_->add_first_hit(x, y, first_hit);
+    }
+  }
+  worker_rays_[size_t(worker)] += rays;
+}
+
+}  // namespace inkray

@@ -1,0 +1,211 @@
+#include "core/scene/compile.h"
+
+#include "core/lights/light_sampling.h"
+#include "core/scene/obj_loader.h"
+
+#include <map>
+
+namespace inkray {
+namespace {
+
+// Loads each image file once per compile, however many materials use it.
+class ImageCache {
+ public:
+  explicit ImageCache(std::filesystem::path base) : base_(std::move(base)) {}
+  std::shared_ptr<const Image> get(const ImageTextureDesc& d, std::string* error) {
+    const std::filesystem::path file = base_ / d.path;
+    const std::string key = file.string() + (d.srgb ? "#srgb" : "#linear");
+    if (auto it = images_.find(key); it != images_.end()) return it->second;
+    auto image = load_image(file, d.srgb, error);
+    if (!image) return nullptr;
+    return images_[key] = std::make_shared<const Image>(std::move(*image));
+  }
+
+ private:
+  std::filesystem::path base_;
+  std::map<std::string, std::shared_ptr<const Image>> images_;
+};
+
+std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images, std::string* error) {
+  if (const auto* c = std::get_if<Color>(&input)) return ConstantTexture{*c};
+  if (const auto* ch = std::get_if<CheckerTextureDesc>(&input)) return CheckerTexture{ch->even, ch->odd, ch->scale};
+  const auto& img = std::get<ImageTextureDesc>(input);
+  auto image = images.get(img, error);
+  if (!image) return std::nullopt;
+  return ImageTexture{std::move(image), img.scale};
+}
+
+std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& images, std::string* error) {
+  auto tex = [&](const ColorInput& c) { return compile_color(c, images, error); };
+  return std::visit(
+      [&](const auto& m) -> std::optional<Material> {
+        using T = std::decay_t<decltype(m)>;
+        if constexpr (std::is_same_v<T, DiffuseDesc>) {
+          auto t = tex(m.albedo);
+          return t ? std::optional<Material>(DiffuseMaterial{*t}) : std::nullopt;
+        } else if constexpr (std::is_same_v<T, ConductorDesc>) {
+          auto t = tex(m.color);
+          return t ? std::optional<Material>(ConductorMaterial{*t, m.roughness * m.roughness}) : std::nullopt;
+        } else if constexpr (std::is_same_v<T, DielectricDesc>) {
+          return DielectricMaterial{DielectricBsdf{m.ior, m.roughness * m.roughness, m.tint}};
+        } else if constexpr (std::is_same_v<T, EmissiveDesc>) {
+          auto t = tex(m.color);
+          return t ? std::optional<Material>(EmissiveMaterial{*t, m.strength, m.two_sided}) : std::nullopt;
+        } else if constexpr (std::is_same_v<T, UnlitDesc>) {
+          auto t = tex(m.color);
+          return t ? std::optional<Material>(UnlitMaterial{*t}) : std::nullopt;
+        } else {
+          return TransparentMaterial{m.tint};
+        }
+      },
+      desc.data);
+}
+
+std::optional<Shape> compile_shape(const ObjectDesc& obj, const std::filesystem::path& base, std::string* error) {
+  const Transform to_world = transform_from_desc(obj.transform);
+  return std::visit(
+      [&](const auto& s) -> std::optional<Shape> {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, SphereDesc>) {
+          return Sphere{s.center, s.radius, to_world};
+        } else if constexpr (std::is_same_v<T, QuadDesc>) {
+          return make_quad(s.corner, s.edge_u, s.edge_v, to_world);
+        } else if constexpr (std::is_same_v<T, BoxDesc>) {
+          return make_box(glm::min(s.min, s.max), glm::max(s.min, s.max), to_world);
+        } else {
+          auto data = load_obj(base / s.path, error);
+          if (!data) return std::nullopt;
+          return make_mesh(std::move(data->positions), std::move(data->normals), std::move(data->uvs),
+                           std::move(data->indices), to_world);
+        }
+      },
+      obj.shape);
+}
+
+Light compile_light(const LightDesc& desc, float scene_radius) {
+  return std::visit(
+      [&](const auto& l) -> Light {
+        using T = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<T, PointLightDesc>) {
+          return PointLight{l.position, l.color * l.intensity};
+        } else if constexpr (std::is_same_v<T, SpotLightDesc>) {
+          const float cos_total = std::cos(glm::radians(l.cone_angle));
+          const float cos_falloff = std::cos(glm::radians(std::min(l.falloff_angle, l.cone_angle)));
+          return SpotLight{l.position, Frame::from_z(glm::normalize(l.target - l.position)), l.color * l.intensity,
+                           cos_total, std::max(cos_falloff, cos_total + 1e-6f)};
+        } else {
+          return DirectionalLight{-glm::normalize(l.direction), l.color * l.intensity, scene_radius};
+        }
+      },
+      desc.data);
+}
+
+// Emissive shapes become area lights when they can be sampled exactly.
+std::optional<Light> area_light_for(const RenderScene& scene, uint32_t object) {
+  const Shape& shape = scene.geometry.shape(object);
+  if (const auto* mesh = std::get_if<TriangleMesh>(&shape)) {
+    std::vector<float> areas(mesh->triangle_count());
+    double total = 0.0;
+    for (size_t t = 0; t < areas.size(); ++t) total += areas[t] = mesh->triangle_area(t);
+    if (total <= 0.0) return std::nullopt;
+    return MeshAreaLight{object, DiscreteDistribution(areas), float(total)};
+  }
+  Point3 center;
+  float radius = 0.f;
+  // A sheared or unevenly scaled sphere has no simple solid-angle sampler; its
+  // emission is still found by BSDF sampling, with full weight.
+  if (!std::get<Sphere>(shape).is_round(&center, &radius)) return std::nullopt;
+  return SphereAreaLight{object, center, radius};
+}
+
+EnvironmentLight compile_environment(const EnvironmentDesc& env, float scene_radius) {
+  EnvironmentLight e;
+  e.scene_radius = scene_radius;
+  if (const auto* c = std::get_if<ConstantEnvironmentDesc>(&env)) {
+    e.zenith = e.horizon = e.nadir = c->color;
+  } else {
+    const auto& g = std::get<GradientEnvironmentDesc>(env);
+    e.zenith = g.zenith;
+    e.horizon = g.horizon;
+    e.nadir = g.nadir;
+  }
+  return e;
+}
+
+}  // namespace
+
+Transform transform_from_desc(const TransformDesc& desc) {
+  Transform t = Transform::scale(desc.scale);
+  for (const RotationDesc& r : desc.rotate) t = Transform::rotate(r.degrees, r.axis) * t;
+  return Transform::translate(desc.translate) * t;
+}
+
+CompileResult compile_scene(const SceneDesc& desc) {
+  CompileResult result;
+  auto scene = std::make_shared<RenderScene>();
+  scene->settings = desc.render;
+  scene->camera = Camera(desc.camera, desc.render.width, desc.render.height);
+
+  ImageCache images(desc.base_dir);
+  std::map<std::string, uint32_t> material_index;
+  for (size_t i = 0; i < desc.materials.size(); ++i) {
+    std::string error;
+    auto m = compile_material(desc.materials[i], images, &error);
+    if (!m) {
+      result.errors.push_back("materials[" + std::to_string(i) + "] \"" + desc.materials[i].name + "\": " + error);
+      continue;
+    }
+    material_index[desc.materials[i].name] = uint32_t(scene->materials.size());
+    scene->materials.push_back(std::move(*m));
+    scene->material_names.push_back(desc.materials[i].name);
+  }
+
+  for (size_t i = 0; i < desc.objects.size(); ++i) {
+    const ObjectDesc& obj = desc.objects[i];
+    if (!obj.visible) continue;
+    const std::string where = "objects[" + std::to_string(i) + "] \"" + obj.name + "\": ";
+    const auto mat = material_index.find(obj.material);
+    if (mat == material_index.end()) {
+      result.errors.push_back(where + "no material named \"" + obj.material + "\"");
+      continue;
+    }
+    std::string error;
+    auto shape = compile_shape(obj, desc.base_dir, &error);
+    if (!shape) {
+      result.errors.push_back(where + error);
+      continue;
+    }
+    scene->geometry.add(std::move(*shape));
+    scene->objects.push_back({obj.name, mat->second, -1, uint32_t(i)});
+  }
+  if (!result.errors.empty()) return result;
+  scene->geometry.commit();
+
+  Point3 lo(0.f), hi(0.f);
+  if (scene->geometry.shape_count()) scene->geometry.bounds(&lo, &hi);
+  scene->scene_center = 0.5f * (lo + hi);
+  scene->scene_radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+
+  // Lights: emissive objects, the lights list, then the environment when it is not black.
+  for (uint32_t o = 0; o < scene->objects.size(); ++o) {
+    if (!material_is_emissive(scene->material_of(o))) continue;
+    if (auto light = area_light_for(*scene, o)) {
+      scene->objects[o].light = int(scene->lights.size());
+      scene->lights.push_back(*light);
+    }
+  }
+  for (const LightDesc& l : desc.lights) scene->lights.push_back(compile_light(l, scene->scene_radius));
+  scene->environment = compile_environment(desc.environment, scene->scene_radius);
+  if (max_component(scene->environment.zenith + scene->environment.horizon + scene->environment.nadir) > 0.f) {
+    scene->environment_light = int(scene->lights.size());
+    scene->lights.push_back(scene->environment);
+  }
+  std::vector<float> power;
+  for (const Light& l : scene->lights) power.push_back(light_power(*scene, l));
+  scene->light_selection = DiscreteDistribution(power);
+
+  result.scene = std::move(scene);
+  return result;
+}
+
+}  // namespace inkray

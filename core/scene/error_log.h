@@ -1,0 +1,54 @@
+// Collects a scene file's problems as full lines, "<file>: <json path>: <message>",
+// so a reader can report every problem instead of stopping at the first.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace inkray {
+
+class ErrorLog {
+ public:
+  // A hostile file can contain millions of mistakes; past this many we only count them.
+  static constexpr std::size_t kMaxLines = 100;
+
+  explicit ErrorLog(std::string_view file_label) : file_(file_label) {}
+
+  // `where` is a JSON path ("objects[3].material") or a text position; empty for the whole file.
+  void add(std::string_view where, std::string_view message) {
+    ++count_;
+    if (lines_.size() >= kMaxLines) return;
+    std::string line = file_;
+    line += ": ";
+    if (!where.empty()) {
+      line += where;
+      line += ": ";
+    }
+    line += message;
+    lines_.push_back(std::move(line));
+  }
+
+  std::size_t count() const { return count_; }
+  bool empty() const { return count_ == 0; }
+
+  // The lines, with a final summary when some were left out.
+  std::vector<std::string> take() {
+    std::vector<std::string> out = std::move(lines_);
+    if (count_ > out.size()) {
+      out.push_back(file_ + ": " + std::to_string(count_ - out.size()) + " more problems not shown");
+    }
+    lines_.clear();
+    count_ = 0;
+    return out;
+  }
+
+ private:
+  std::string file_;
+  std::vector<std::string> lines_;
+  std::size_t count_ = 0;
+};
+
+}  // namespace inkray

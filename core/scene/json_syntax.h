@@ -1,0 +1,23 @@
+// Strict JSON text -> nlohmann::json for scene files. Syntax errors get a line and
+// column, overflowing numbers and duplicate keys get their JSON path, and nesting is
+// bounded so a hostile file cannot exhaust the stack.
+#pragma once
+
+#include "core/scene/error_log.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <string_view>
+
+namespace inkray {
+
+// Far deeper than any scene needs (the deepest value, a texture's colour, is at depth 5).
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+// The document, or nullopt after an error that stops parsing (logged). Duplicate keys
+// are logged without stopping, so the reader can report the file's other problems too.
+std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log);
+
+}  // namespace inkray

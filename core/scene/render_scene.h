@@ -1,0 +1,40 @@
+// RenderScene: the immutable, compiled form of a SceneDesc (DESIGN principle 2).
+// Render threads only read it, through a shared_ptr to const.
+#pragma once
+
+#include "core/camera/camera.h"
+#include "core/geometry/embree_scene.h"
+#include "core/lights/light.h"
+#include "core/materials/material.h"
+#include "core/scene/desc.h"
+
+#include <string>
+#include <vector>
+
+namespace inkray {
+
+struct RenderObject {
+  std::string name;
+  uint32_t material = 0;
+  int light = -1;        // index into RenderScene::lights when the object emits and is sampled
+  uint32_t source = 0;   // index into SceneDesc::objects
+};
+
+struct RenderScene {
+  Camera camera;
+  RenderSettings settings;
+  EmbreeScene geometry;               // shape i belongs to objects[i]
+  std::vector<RenderObject> objects;
+  std::vector<Material> materials;
+  std::vector<std::string> material_names;
+  std::vector<Light> lights;
+  DiscreteDistribution light_selection;  // by estimated power; empty when there are no lights
+  EnvironmentLight environment;          // what escaping rays see (black by default)
+  int environment_light = -1;            // index into lights when the environment is not black
+  Point3 scene_center{0.f};
+  float scene_radius = 1.f;
+
+  const Material& material_of(uint32_t object) const { return materials[objects[object].material]; }
+};
+
+}  // namespace inkray

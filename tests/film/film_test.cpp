@@ -1,0 +1,80 @@
+// Film accumulation, the half-buffer noise estimate, AOV gating and image files.
+#include "core/film/film.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace inkray {
+namespace {
+
+TEST(Film, MeanOfSamplesAndDroppedNonFinite) {
+  Film film(2, 1, {});
+  film.add_sample(0, 0, 0, Color(1.f));
+  film.add_sample(0, 0, 1, Color(3.f));
+  film.add_sample(0, 0, 2, Color(std::numeric_limits<float>::quiet_NaN()));
+  film.add_sample(1, 0, 0, Color(kInfinity));
+  const RgbImage img = film.resolve();
+  EXPECT_EQ(img.at(0, 0), Color(2.f));
+  EXPECT_EQ(img.at(1, 0), Color(0.f));
+  EXPECT_EQ(film.nonfinite_samples(), 2u);
+  EXPECT_EQ(film.samples_at(0, 0), 2u);
+}
+
+TEST(Film, NoiseEstimateIsZeroForConstantAndPositiveForNoise) {
+  Film flat(8, 8, {}), noisy(8, 8, {});
+  for (uint32_t pass = 0; pass < 4; ++pass)
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) {
+        flat.add_sample(x, y, pass, Color(0.5f));
+        noisy.add_sample(x, y, pass, Color(pass % 2 ? 1.f : 0.f));
+      }
+  EXPECT_EQ(flat.estimated_relative_error(), 0.0);
+  // Halves differ by 1 everywhere, the mean is 0.5: sqrt(1/4) / 0.5 = 1.
+  EXPECT_NEAR(noisy.estimated_relative_error(), 1.0, 1e-6);
+}
+
+TEST(Film, AovsAreOnlyKeptWhenAsked) {
+  AovSet set;
+  set.add(Aov::depth);
+  Film film(1, 1, set);
+  FirstHit hit;
+  hit.object = 3;
+  hit.depth = 2.f;
+  film.add_first_hit(0, 0, hit);
+  hit.depth = 4.f;
+  film.add_first_hit(0, 0, hit);
+  EXPECT_EQ(film.resolve_aov(Aov::depth).at(0, 0), Color(3.f));
+  EXPECT_EQ(film.resolve_aov(Aov::albedo).at(0, 0), Color(0.f));
+}
+
+TEST(ImageIo, PfmRoundTripAndAtomicWrite) {
+  const auto dir = std::filesystem::temp_directory_path() / "inkray_image_io_test";
+  std::filesystem::create_directories(dir);
+  RgbImage img{3, 2, {Color(0.f), Color(1.f, 2.f, 3.f), Color(-1.f), Color(1e6f), Color(0.25f), Color(7.f)}};
+  std::string error;
+  ASSERT_TRUE(write_image(dir / "a.pfm", img, &error)) << error;
+  RgbImage back;
+  ASSERT_TRUE(read_pfm(dir / "a.pfm", &back, &error)) << error;
+  EXPECT_EQ(back.pixels, img.pixels);
+  ASSERT_TRUE(write_image(dir / "a.png", img, &error)) << error;
+  ASSERT_TRUE(write_image(dir / "a.exr", img, &error)) << error;
+  EXPECT_GT(std::filesystem::file_size(dir / "a.exr"), 0u);
+  // Nothing but the three images: no temporary files left behind.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 3);
+  EXPECT_FALSE(write_image(dir / "missing" / "a.png", img, &error));
+  EXPECT_NE(error.find("missing/a.png"), std::string::npos);
+  EXPECT_FALSE(write_image(dir / "a.bmp", img, &error));
+  EXPECT_NE(error.find("expected .png, .pfm or .exr"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ImageIo, SrgbEncoding) {
+  EXPECT_EQ(linear_to_srgb(0.f), 0.f);
+  EXPECT_EQ(linear_to_srgb(1.f), 1.f);
+  EXPECT_NEAR(linear_to_srgb(0.5f), 0.7354f, 1e-4f);
+  EXPECT_EQ(linear_to_srgb(std::numeric_limits<float>::quiet_NaN()), 0.f);
+}
+
+}  // namespace
+}  // namespace inkray

@@ -1,0 +1,39 @@
+// Small helpers for tests that render: compile a SceneDesc and render it.
+#pragma once
+
+#include "core/render/batch_render.h"
+#include "core/scene/compile.h"
+
+#include <gtest/gtest.h>
+
+namespace inkray::testing {
+
+inline SceneDesc small_scene(int width, int height) {
+  SceneDesc d;
+  d.render.width = width;
+  d.render.height = height;
+  d.render.max_depth = 64;
+  return d;
+}
+
+inline RgbImage render_scene(const SceneDesc& desc, int spp, int threads = 2, RenderStats* stats = nullptr) {
+  const CompileResult c = compile_scene(desc);
+  EXPECT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
+  if (!c.scene) return {};
+  RenderSession session(threads);
+  session.set_scene(c.scene);
+  render_batch(session, {spp, 0.0});
+  if (stats) *stats = session.stats();
+  return session.film().resolve();
+}
+
+inline Color mean_color(const RgbImage& img, int x0, int y0, int x1, int y1) {
+  glm::dvec3 sum(0.0);
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) sum += glm::dvec3(img.at(x, y));
+  return Color(sum / double((x1 - x0) * (y1 - y0)));
+}
+
+inline Color mean_color(const RgbImage& img) { return mean_color(img, 0, 0, img.width, img.height); }
+
+}  // namespace inkray::testing
