@@ -93,7 +93,7 @@ double bare_embree_rate(const RenderScene& scene, int threads, double seconds) {
     pool.parallel_for(h, [&](int y, int worker) {
       uint64_t count = 0;
       for (int x = 0; x < w; ++x) {
-        Sampler sampler(uint32_t(x), uint32_t(y), pass, 77);
+        const Sampler sampler(uint32_t(x), uint32_t(y), pass, 77);
         Ray ray = scene.camera.generate_ray(Vec2(float(x) + 0.5f, float(y) + 0.5f), Vec2(0.5f));
         for (int depth = 0; depth < 5; ++depth) {
           Hit hit;
@@ -102,10 +102,10 @@ double bare_embree_rate(const RenderScene& scene, int threads, double seconds) {
           const SurfaceInteraction si = scene.geometry.interaction(ray, hit);
           const Normal3 n = glm::dot(si.ng, ray.d) < 0.f ? si.ng : -si.ng;
           const Frame frame = Frame::from_z(n);
-          const Point3 target = scene.scene_center + 0.3f * scene.scene_radius * sample_uniform_sphere(sampler.get_2d());
+          const Point3 target = scene.scene_center + 0.3f * scene.scene_radius * sample_uniform_sphere(sampler.get_pair(2 + 2 * uint32_t(depth)));
           ++count;
           scene.geometry.occluded(spawn_ray_to(si.p, si.p_error, n, target, Vec3(0.f), Vec3(0.f)), kShadowTMax);
-          ray = spawn_ray(si.p, si.p_error, n, frame.to_world(sample_cosine_hemisphere(sampler.get_2d())));
+          ray = spawn_ray(si.p, si.p_error, n, frame.to_world(sample_cosine_hemisphere(sampler.get_pair(3 + 2 * uint32_t(depth)))));
         }
       }
       rays[size_t(worker)] += count;

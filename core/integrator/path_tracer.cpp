@@ -7,10 +7,11 @@
 namespace inkray {
 namespace {
 
-// Sample dimensions: pairs 0-1 belong to the camera; each bounce owns four
-// pairs, so a decision always draws the same dimension whatever came before.
+// Sample dimensions: pairs 0-1 belong to the camera (see render_session.cpp);
+// each bounce owns three pairs, so a decision always draws the same dimension
+// whatever came before: (light choice, lobe choice), light position, direction.
 constexpr uint32_t kCameraPairs = 2;
-constexpr uint32_t kPairsPerBounce = 4;
+constexpr uint32_t kPairsPerBounce = 3;
 
 void record_first_hit(const RenderScene& scene, const SurfaceInteraction& si, FirstHit* out) {
   const RenderObject& obj = scene.objects[si.object];
@@ -32,7 +33,7 @@ float emitter_weight(const RenderScene& scene, int light, bool after_delta, floa
 
 }  // namespace
 
-PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, Sampler& sampler, FirstHit* first_hit) {
+PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler, FirstHit* first_hit) {
   PathResult result;
   Color beta(1.f);
   float eta_scale = 1.f;
@@ -87,16 +88,13 @@ PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, Sampler& 
     const Vec3 wo_local = frame.to_local(wo);
     const LightReference ref{si.p, si.p_error, ng};
 
-    sampler.start_dimension(kCameraPairs + kPairsPerBounce * uint32_t(depth));
-    const Vec2 u_choice = sampler.get_2d();  // x: which light, y: Russian roulette
-    const Vec2 u_light = sampler.get_2d();
-    const float u_lobe = sampler.get_1d();
-    const Vec2 u_dir = sampler.get_2d();
+    const uint32_t pairs = kCameraPairs + kPairsPerBounce * uint32_t(depth);
+    const Vec2 u_choice = sampler.get_pair(pairs);  // x: which light, y: which lobe
 
     if (sample_lights && !bsdf_is_delta(*bsdf)) {
       float pmf = 0.f;
       const size_t li = scene.light_selection.sample(u_choice.x, &pmf);
-      if (const auto ls = sample_light(scene, scene.lights[li], ref, u_light)) {
+      if (const auto ls = sample_light(scene, scene.lights[li], ref, sampler.get_pair(pairs + 1))) {
         const Vec3 wi_local = frame.to_local(ls->wi);
         const Color f = bsdf_eval(*bsdf, wo_local, wi_local) * std::abs(wi_local.z);
         if (!is_black(f)) {
@@ -110,7 +108,7 @@ PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, Sampler& 
       }
     }
 
-    const auto bs = bsdf_sample(*bsdf, wo_local, u_lobe, u_dir);
+    const auto bs = bsdf_sample(*bsdf, wo_local, u_choice.y, sampler.get_pair(pairs + 2));
     if (!bs) break;
     beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
     after_delta = bs->is_delta;
@@ -124,7 +122,7 @@ PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, Sampler& 
     const float rr = max_component(beta * eta_scale);
     if (rr < 1.f && depth > 1) {
       const float q = std::max(0.f, 1.f - rr);
-      if (u_choice.y < q) break;
+      if (sampler.get_hashed(uint32_t(depth)) < q) break;
       beta /= 1.f - q;
     }
     if (is_black(beta)) break;

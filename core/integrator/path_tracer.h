@@ -14,6 +14,6 @@ struct PathResult {
 };
 
 // Radiance along a camera ray. `first_hit` is filled when not null.
-PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, Sampler& sampler, FirstHit* first_hit);
+PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler, FirstHit* first_hit);
 
 }  // namespace inkray

@@ -61,9 +61,9 @@ void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
   uint64_t rays = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
-      Sampler sampler(uint32_t(x), uint32_t(y), pass, seed);
-      const Vec2 film_pos = Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_2d());
-      const Ray ray = scene.camera.generate_ray(film_pos, sampler.get_2d());
+      const Sampler sampler(uint32_t(x), uint32_t(y), pass, seed);
+      const Vec2 film_pos = Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_pair(0));
+      const Ray ray = scene.camera.generate_ray(film_pos, sampler.get_pair(1));
       FirstHit first_hit;
       PathResult r = trace_path(scene, ray, sampler, want_first_hit ? &first_hit : nullptr);
       rays += r.rays;

@@ -1,8 +1,10 @@
 // Collects a scene file's problems as full lines, "<file>: <json path>: <message>",
-// so a reader can report every problem instead of stopping at the first.
+// so a reader can report every problem instead of stopping at the first; and the
+// small helpers that spell paths and values in those lines.
 #pragma once
 
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -50,5 +52,43 @@ class ErrorLog {
   std::vector<std::string> lines_;
   std::size_t count_ = 0;
 };
+
+// "objects[3]" + "material" -> "objects[3].material"; a key at the top level has no dot.
+inline std::string child_path(std::string_view path, std::string_view key) {
+  std::string out(path);
+  if (!out.empty()) out += '.';
+  out += key;
+  return out;
+}
+
+inline std::string element_path(std::string_view path, std::size_t index) {
+  std::string out(path);
+  out += '[';
+  out += std::to_string(index);
+  out += ']';
+  return out;
+}
+
+// A user's string in a message: quoted, control characters escaped, and cut short
+// (a hostile value may be megabytes long).
+inline std::string in_quotes(std::string_view s) {
+  constexpr std::size_t kMaxShown = 60;
+  std::string out = "\"";
+  for (std::size_t i = 0; i < s.size() && i < kMaxShown; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20 || c == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+      out += escaped;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (s.size() > kMaxShown) out += "...";
+  return out + "\"";
+}
 
 }  // namespace inkray

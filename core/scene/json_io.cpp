@@ -110,7 +110,8 @@ void sync_directory(const fs::path& dir) {
 
 }  // namespace
 
-SceneLoadResult parse_scene(std::string_view json_text, const fs::path& base_dir, std::string_view file_label) {
+SceneLoadResult parse_scene(std::string_view json_text, const fs::path& base_dir,
+                            std::string_view file_label) {
   SceneLoadResult result;
   ErrorLog log(file_label);
   try {
@@ -185,7 +186,9 @@ bool save_scene(const SceneDesc& scene, const fs::path& file, std::string* error
 
   // Keep the permissions of the file being replaced.
   struct stat existing;
-  if (::stat(target.c_str(), &existing) == 0 && S_ISREG(existing.st_mode)) ::fchmod(fd, existing.st_mode & 07777);
+  if (::stat(target.c_str(), &existing) == 0 && S_ISREG(existing.st_mode)) {
+    ::fchmod(fd, existing.st_mode & 07777);
+  }
 
   const auto abandon = [&](const std::string& what) {
     const std::string reason = what + ": " + errno_text(errno);

@@ -1,8 +1,9 @@
 // The generic scene reader: one visitor over visit_params reads and checks every
 // field of every struct, so its messages come from the same Param list as the editor's
-// widgets. Sections, tagged variants and cross-references (names, files) are here.
+// widgets. Checks that span the document (names, references, files) are in scene_checks.
 #include "core/scene/json_read.h"
 
+#include "core/scene/scene_checks.h"
 #include "core/scene/tagged_variant.h"
 
 #include <algorithm>
@@ -12,10 +13,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <type_traits>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -35,22 +33,6 @@ constexpr std::string_view kTopLevelKeys[] = {"format",      "version",   "camer
                                               "environment", "materials", "objects", "lights"};
 
 // ---------------------------------------------------------------- message helpers
-std::string child(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
-}
-std::string element(std::string_view path, std::size_t index) {
-  return std::string(path) + "[" + std::to_string(index) + "]";
-}
-
-std::string in_quotes(std::string_view s) {
-  constexpr std::size_t kMaxShown = 60;  // a hostile value may be megabytes long
-  const bool cut = s.size() > kMaxShown;
-  std::string shown = Json(std::string(s.substr(0, cut ? kMaxShown : s.size())))
-                          .dump(-1, ' ', false, Json::error_handler_t::replace);
-  if (cut) shown.insert(shown.size() - 1, "...");
-  return shown;
-}
-
 std::string format_number(double x) {
   if (std::isnan(x)) return "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
@@ -74,13 +56,20 @@ bool is_scalar(const Json& j) { return !j.is_array() && !j.is_object(); }
 // What a value was, for "got ..." (short and never recursive: the value may be hostile).
 std::string describe(const Json& j) {
   switch (j.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::boolean: return j.get<bool>() ? "true" : "false";
-    case Json::value_t::number_integer: return std::to_string(j.get<std::int64_t>());
-    case Json::value_t::number_unsigned: return std::to_string(j.get<std::uint64_t>());
-    case Json::value_t::number_float: return format_number(j.get<double>());
-    case Json::value_t::string: return in_quotes(j.get_ref<const std::string&>());
-    case Json::value_t::object: return "an object";
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::boolean:
+      return j.get<bool>() ? "true" : "false";
+    case Json::value_t::number_integer:
+      return std::to_string(j.get<std::int64_t>());
+    case Json::value_t::number_unsigned:
+      return std::to_string(j.get<std::uint64_t>());
+    case Json::value_t::number_float:
+      return format_number(j.get<double>());
+    case Json::value_t::string:
+      return in_quotes(j.get_ref<const std::string&>());
+    case Json::value_t::object:
+      return "an object";
     case Json::value_t::array: {
       if (j.empty()) return "an empty array";
       if (j.size() <= 8 && std::all_of(j.begin(), j.end(), is_scalar)) {
@@ -90,7 +79,8 @@ std::string describe(const Json& j) {
       }
       return "an array of " + std::to_string(j.size()) + (j.size() == 1 ? " element" : " elements");
     }
-    default: return "an unsupported value";
+    default:
+      return "an unsupported value";
   }
 }
 
@@ -113,37 +103,32 @@ std::string limits_text(const Param& p) {
 }
 
 // ---------------------------------------------------------------- values
-struct Reader {
-  ErrorLog& log;
-  std::vector<std::pair<std::string, std::string>> assets;  // JSON path, file path as written
-};
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, ColorInput& out);
 
-bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at, ColorInput& out);
-
-bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at, float& out) {
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, float& out) {
   if (!j.is_number() || !number_ok(p, j.get<double>())) {
-    r.log.add(at, "expected a number" + limits_text(p) + ", got " + describe(j));
+    log.add(at, "expected a number" + limits_text(p) + ", got " + describe(j));
     return false;
   }
   out = static_cast<float>(j.get<double>());
   return true;
 }
 
-bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at, int& out) {
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, int& out) {
   const auto int_ok = [&](double x) {
     return x == std::trunc(x) && x >= p.min && x <= p.max && std::fabs(x) <= std::numeric_limits<int>::max();
   };
   if (!j.is_number() || !int_ok(j.get<double>())) {
-    r.log.add(at, "expected an integer" + range_text(p) + ", got " + describe(j));
+    log.add(at, "expected an integer" + range_text(p) + ", got " + describe(j));
     return false;
   }
   out = static_cast<int>(j.get<double>());
   return true;
 }
 
-bool read_value(Reader& r, const Param&, const Json& j, const std::string& at, bool& out) {
+bool read_value(ErrorLog& log, const Param&, const Json& j, const std::string& at, bool& out) {
   if (!j.is_boolean()) {
-    r.log.add(at, "expected true or false, got " + describe(j));
+    log.add(at, "expected true or false, got " + describe(j));
     return false;
   }
   out = j.get<bool>();
@@ -151,58 +136,50 @@ bool read_value(Reader& r, const Param&, const Json& j, const std::string& at, b
 }
 
 // Points, vectors, directions and colours; a colour may also be one number (grey).
-bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at, Vec3& out) {
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, Vec3& out) {
   const bool grey_ok = p.kind == ParamKind::color;
   const bool shape_ok = (grey_ok && j.is_number()) ||
-                        (j.is_array() && j.size() == 3 && std::all_of(j.begin(), j.end(), [](const Json& e) {
-                           return e.is_number();
-                         }));
-  const std::string expected = grey_ok ? "expected a number or an array of 3 numbers" : "expected an array of 3 numbers";
+                        (j.is_array() && j.size() == 3 &&
+                         std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_number(); }));
+  const std::string expected =
+      grey_ok ? "expected a number or an array of 3 numbers" : "expected an array of 3 numbers";
   if (!shape_ok) {
-    r.log.add(at, expected + ", got " + describe(j));
+    log.add(at, expected + ", got " + describe(j));
     return false;
   }
   Vec3 v;
   for (int i = 0; i < 3; ++i) {
     const double x = j.is_number() ? j.get<double>() : j[static_cast<std::size_t>(i)].get<double>();
     if (!number_ok(p, x)) {
-      r.log.add(at, expected + ", each" + limits_text(p) + ", got " + describe(j));
+      log.add(at, expected + ", each" + limits_text(p) + ", got " + describe(j));
       return false;
     }
     v[i] = static_cast<float>(x);
   }
   if (p.kind == ParamKind::direction && v == Vec3(0.f)) {
-    r.log.add(at, "expected a non-zero direction, got " + describe(j));
+    log.add(at, "expected a non-zero direction, got " + describe(j));
     return false;
   }
   out = v;
   return true;
 }
 
-bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at, std::string& out) {
-  const bool is_path = p.kind == ParamKind::path;
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, std::string& out) {
   if (!j.is_string() || j.get_ref<const std::string&>().empty()) {
-    r.log.add(at, std::string(is_path ? "expected a file path (a non-empty string)" : "expected a non-empty string") +
-                      ", got " + describe(j));
+    const bool is_path = p.kind == ParamKind::path;
+    log.add(at, std::string(is_path ? "expected a file path (a non-empty string)"
+                                    : "expected a non-empty string") +
+                    ", got " + describe(j));
     return false;
   }
-  const std::string& s = j.get_ref<const std::string&>();
-  if (is_path) {
-    // The OS would see only the part before a NUL, so the file checked would not be the file named.
-    if (s.find('\0') != std::string::npos) {
-      r.log.add(at, "expected a file path without NUL characters, got " + describe(j));
-      return false;
-    }
-    r.assets.emplace_back(at, s);
-  }
-  out = s;
+  out = j.get_ref<const std::string&>();  // paths are checked against the disk once the whole scene is read
   return true;
 }
 
 // Choices: an enum stored by index into Param::choices.
 template <class E>
-  requires std::is_enum_v<E>
-bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at, E& out) {
+requires std::is_enum_v<E>
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, E& out) {
   if (j.is_string()) {
     const std::string& name = j.get_ref<const std::string&>();
     for (std::size_t i = 0; i < p.choices.size(); ++i) {
@@ -214,7 +191,7 @@ bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at,
   }
   std::string names;
   for (std::string_view c : p.choices) names += (names.empty() ? "" : ", ") + in_quotes(c);
-  r.log.add(at, "expected one of " + names + ", got " + describe(j));
+  log.add(at, "expected one of " + names + ", got " + describe(j));
   return false;
 }
 
@@ -222,7 +199,7 @@ bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at,
 // The visitor handed to visit_params: reads the key a Param names, if present, and
 // records the name so unknown keys can be reported afterwards.
 struct ParamReader {
-  Reader& r;
+  ErrorLog& log;
   const Json& object;
   const std::string& at;
   KeyList& allowed;
@@ -232,58 +209,58 @@ struct ParamReader {
     allowed.push_back(p.name);
     const auto it = object.find(std::string(p.name));
     if (it == object.end()) {
-      if (p.required) r.log.add(at, "missing required key \"" + std::string(p.name) + "\"");
+      if (p.required) log.add(at, "missing required key \"" + std::string(p.name) + "\"");
       return;
     }
-    read_value(r, p, *it, child(at, p.name), field);
+    read_value(log, p, *it, child_path(at, p.name), field);
   }
 };
 
 template <class Desc>
-void read_params(Reader& r, const Json& object, Desc& desc, const std::string& at, KeyList& allowed) {
-  ParamReader reader{r, object, at, allowed};
+void read_params(ErrorLog& log, const Json& object, Desc& desc, const std::string& at, KeyList& allowed) {
+  ParamReader reader{log, object, at, allowed};
   visit_params(desc, reader);
 }
 
-void check_keys(Reader& r, const Json& object, const std::string& at, const KeyList& allowed) {
+void check_keys(ErrorLog& log, const Json& object, const std::string& at, const KeyList& allowed) {
   for (auto it = object.begin(); it != object.end(); ++it) {
     if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end()) {
-      r.log.add(at, "unknown key " + in_quotes(it.key()) + " (expected one of: " + join(allowed) + ")");
+      log.add(at, "unknown key " + in_quotes(it.key()) + " (expected one of: " + join(allowed) + ")");
     }
   }
 }
 
-bool expect_object(Reader& r, const Json& j, const std::string& at, std::string_view what) {
+bool expect_object(ErrorLog& log, const Json& j, const std::string& at, std::string_view what) {
   if (j.is_object()) return true;
-  r.log.add(at, "expected " + std::string(what) + ", got " + describe(j));
+  log.add(at, "expected " + std::string(what) + ", got " + describe(j));
   return false;
 }
 
 // Picks the alternative named by "type" and reads its parameters from the same object.
 // False when the type is missing or unknown (the object's other keys are then unchecked).
 template <class Variant>
-bool read_tagged(Reader& r, const Json& object, Variant& out, const std::string& at, std::string_view noun,
-                 KeyList& allowed) {
+bool read_tagged(ErrorLog& log, const Json& object, Variant& out, const std::string& at,
+                 std::string_view noun, KeyList& allowed) {
   allowed.push_back("type");
   const std::string types = type_name_list<Variant>();
   const auto type = object.find("type");
   if (type == object.end()) {
-    r.log.add(at, "missing required key \"type\" (the " + std::string(noun) + " type, one of: " + types + ")");
+    log.add(at, "missing required key \"type\" (the " + std::string(noun) + " type, one of: " + types + ")");
     return false;
   }
   if (!type->is_string()) {
-    r.log.add(child(at, "type"), "expected a " + std::string(noun) + " type (one of: " + types + "), got " +
-                                     describe(*type));
+    log.add(child_path(at, "type"),
+            "expected a " + std::string(noun) + " type (one of: " + types + "), got " + describe(*type));
     return false;
   }
   if (!emplace_by_type_name(out, type->get_ref<const std::string&>())) {
-    r.log.add(child(at, "type"), "unknown " + std::string(noun) + " type " + describe(*type) +
-                                     " (expected one of: " + types + ")");
+    log.add(child_path(at, "type"), "unknown " + std::string(noun) + " type " + describe(*type) +
+                                        " (expected one of: " + types + ")");
     return false;
   }
   std::visit(
       [&]<class T>(T& alternative) {
-        if constexpr (Tagged<T>) read_params(r, object, alternative, at, allowed);
+        if constexpr (Tagged<T>) read_params(log, object, alternative, at, allowed);
       },
       out);
   return true;
@@ -291,189 +268,137 @@ bool read_tagged(Reader& r, const Json& object, Variant& out, const std::string&
 
 // A value that is nothing but a tagged variant: {"type": ..., parameters...}.
 template <class Variant>
-void read_tagged_object(Reader& r, const Json& j, Variant& out, const std::string& at, std::string_view noun) {
-  if (!expect_object(r, j, at, "an object with a \"type\" key")) return;
+void read_tagged_object(ErrorLog& log, const Json& j, Variant& out, const std::string& at,
+                        std::string_view noun) {
+  if (!expect_object(log, j, at, "an object with a \"type\" key")) return;
   KeyList allowed;
-  if (read_tagged(r, j, out, at, noun, allowed)) check_keys(r, j, at, allowed);
+  if (read_tagged(log, j, out, at, noun, allowed)) check_keys(log, j, at, allowed);
 }
 
-bool read_value(Reader& r, const Param& p, const Json& j, const std::string& at, ColorInput& out) {
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, ColorInput& out) {
   if (j.is_object()) {
-    read_tagged_object(r, j, out, at, "texture");
+    read_tagged_object(log, j, out, at, "texture");
     return true;
   }
   if (j.is_number() || j.is_array()) {
     Param constant = p;
     constant.kind = ParamKind::color;
     Color c;
-    if (!read_value(r, constant, j, at, c)) return false;
+    if (!read_value(log, constant, j, at, c)) return false;
     out = c;
     return true;
   }
-  r.log.add(at, "expected a number or an array of 3 numbers (or a texture object with \"type\": " +
-                    type_name_list<ColorInput>() + "), got " + describe(j));
+  log.add(at, "expected a number or an array of 3 numbers (or a texture object with \"type\": " +
+                  type_name_list<ColorInput>() + "), got " + describe(j));
   return false;
 }
 
 template <class Desc>
-void read_struct(Reader& r, const Json& j, Desc& desc, const std::string& at) {
-  if (!expect_object(r, j, at, "an object")) return;
+void read_struct(ErrorLog& log, const Json& j, Desc& desc, const std::string& at) {
+  if (!expect_object(log, j, at, "an object")) return;
   KeyList allowed;
-  read_params(r, j, desc, at, allowed);
-  check_keys(r, j, at, allowed);
+  read_params(log, j, desc, at, allowed);
+  check_keys(log, j, at, allowed);
 }
 
 // ---------------------------------------------------------------- document sections
-void read_transform(Reader& r, const Json& j, TransformDesc& t, const std::string& at) {
-  if (!expect_object(r, j, at, "an object with keys scale, rotate, translate")) return;
+void read_transform(ErrorLog& log, const Json& j, TransformDesc& t, const std::string& at) {
+  if (!expect_object(log, j, at, "an object with keys scale, rotate, translate")) return;
   KeyList allowed = {"scale", "rotate", "translate"};
   if (const auto it = j.find("scale"); it != j.end()) {
-    const std::string scale_at = child(at, "scale");
+    const std::string scale_at = child_path(at, "scale");
     Vec3 scale;
     // A zero factor makes the transform singular: normals and inverse rays would be NaN.
-    if (read_value(r, kScale, *it, scale_at, scale)) {
+    if (read_value(log, kScale, *it, scale_at, scale)) {
       if (scale.x == 0.f || scale.y == 0.f || scale.z == 0.f) {
-        r.log.add(scale_at, "expected non-zero scale factors, got " + describe(*it));
+        log.add(scale_at, "expected non-zero scale factors, got " + describe(*it));
       } else {
         t.scale = scale;
       }
     }
   }
   if (const auto it = j.find("rotate"); it != j.end()) {
-    const std::string rotate_at = child(at, "rotate");
+    const std::string rotate_at = child_path(at, "rotate");
     if (!it->is_array()) {
-      r.log.add(rotate_at, "expected an array of rotations ({\"axis\": [x, y, z], \"degrees\": a}), got " +
-                               describe(*it));
+      log.add(rotate_at,
+              "expected an array of rotations ({\"axis\": [x, y, z], \"degrees\": a}), got " + describe(*it));
     } else {
       for (std::size_t i = 0; i < it->size(); ++i) {
         RotationDesc rotation;
-        read_struct(r, (*it)[i], rotation, element(rotate_at, i));
+        read_struct(log, (*it)[i], rotation, element_path(rotate_at, i));
         t.rotate.push_back(rotation);
       }
     }
   }
-  if (const auto it = j.find("translate"); it != j.end()) read_value(r, kTranslate, *it, child(at, "translate"), t.translate);
-  check_keys(r, j, at, allowed);
+  if (const auto it = j.find("translate"); it != j.end()) {
+    read_value(log, kTranslate, *it, child_path(at, "translate"), t.translate);
+  }
+  check_keys(log, j, at, allowed);
 }
 
-void read_material(Reader& r, const Json& j, MaterialDesc& m, const std::string& at) {
-  if (!expect_object(r, j, at, "a material object ({\"name\": ..., \"type\": ..., ...})")) return;
+void read_material(ErrorLog& log, const Json& j, MaterialDesc& m, const std::string& at) {
+  if (!expect_object(log, j, at, "a material object ({\"name\": ..., \"type\": ..., ...})")) return;
   KeyList allowed;
-  ParamReader{r, j, at, allowed}(kMaterialName, m.name);
-  if (read_tagged(r, j, m.data, at, "material", allowed)) check_keys(r, j, at, allowed);
+  ParamReader{log, j, at, allowed}(kMaterialName, m.name);
+  if (read_tagged(log, j, m.data, at, "material", allowed)) check_keys(log, j, at, allowed);
 }
 
-void read_light(Reader& r, const Json& j, LightDesc& l, const std::string& at) {
-  if (!expect_object(r, j, at, "a light object ({\"type\": ..., ...})")) return;
+void read_light(ErrorLog& log, const Json& j, LightDesc& l, const std::string& at) {
+  if (!expect_object(log, j, at, "a light object ({\"type\": ..., ...})")) return;
   KeyList allowed;
-  ParamReader{r, j, at, allowed}(kLightName, l.name);
-  if (read_tagged(r, j, l.data, at, "light", allowed)) check_keys(r, j, at, allowed);
+  ParamReader{log, j, at, allowed}(kLightName, l.name);
+  if (read_tagged(log, j, l.data, at, "light", allowed)) check_keys(log, j, at, allowed);
 }
 
-void read_object(Reader& r, const Json& j, ObjectDesc& o, const std::string& at) {
-  if (!expect_object(r, j, at, "an object ({\"material\": ..., \"shape\": ..., ...})")) return;
+void read_object(ErrorLog& log, const Json& j, ObjectDesc& o, const std::string& at) {
+  if (!expect_object(log, j, at, "an object ({\"material\": ..., \"shape\": ..., ...})")) return;
   KeyList allowed;
-  read_params(r, j, o, at, allowed);
+  read_params(log, j, o, at, allowed);
   allowed.push_back("shape");
   allowed.push_back("transform");
-  if (const auto it = j.find("shape"); it != j.end()) read_tagged_object(r, *it, o.shape, child(at, "shape"), "shape");
-  if (const auto it = j.find("transform"); it != j.end()) read_transform(r, *it, o.transform, child(at, "transform"));
-  check_keys(r, j, at, allowed);
+  if (const auto it = j.find("shape"); it != j.end()) {
+    read_tagged_object(log, *it, o.shape, child_path(at, "shape"), "shape");
+  }
+  if (const auto it = j.find("transform"); it != j.end()) {
+    read_transform(log, *it, o.transform, child_path(at, "transform"));
+  }
+  check_keys(log, j, at, allowed);
 }
 
 template <class Item, class ReadItem>
-void read_list(Reader& r, const Json& doc, std::string_view key, std::vector<Item>& items, ReadItem read_item) {
+void read_list(ErrorLog& log, const Json& doc, std::string_view key, std::vector<Item>& items,
+               ReadItem read_item) {
   const auto it = doc.find(std::string(key));
   if (it == doc.end()) return;
   if (!it->is_array()) {
-    r.log.add(key, "expected an array, got " + describe(*it));
+    log.add(key, "expected an array, got " + describe(*it));
     return;
   }
   items.reserve(it->size());
   for (std::size_t i = 0; i < it->size(); ++i) {
     Item item;
-    read_item(r, (*it)[i], item, element(key, i));
+    read_item(log, (*it)[i], item, element_path(key, i));
     items.push_back(std::move(item));  // even when broken, so indices in messages match the file
   }
 }
 
-void read_header(Reader& r, const Json& doc) {
+void read_header(ErrorLog& log, const Json& doc) {
   const std::string format_name = in_quotes(kSceneFormatName);
   if (const auto it = doc.find("format"); it == doc.end()) {
-    r.log.add("", "missing required key \"format\" (expected " + format_name + ")");
+    log.add("", "missing required key \"format\" (expected " + format_name + ")");
   } else if (!it->is_string() || it->get_ref<const std::string&>() != kSceneFormatName) {
-    r.log.add("format", "expected " + format_name + ", got " + describe(*it));
+    log.add("format", "expected " + format_name + ", got " + describe(*it));
   }
   const std::string supported = "(supported: " + std::to_string(kSceneFormatVersion) + ")";
   if (const auto it = doc.find("version"); it == doc.end()) {
-    r.log.add("", "missing required key \"version\" " + supported);
+    log.add("", "missing required key \"version\" " + supported);
   } else if (!it->is_number() || it->get<double>() != std::trunc(it->get<double>())) {
-    r.log.add("version", "expected an integer " + supported + ", got " + describe(*it));
+    log.add("version", "expected an integer " + supported + ", got " + describe(*it));
   } else if (it->get<double>() > kSceneFormatVersion) {
-    r.log.add("version", "version " + describe(*it) + " is newer than this build of inkray supports " + supported);
+    log.add("version",
+            "version " + describe(*it) + " is newer than this build of inkray supports " + supported);
   } else if (it->get<double>() < kSceneFormatVersion) {
-    r.log.add("version", "unsupported version " + describe(*it) + " " + supported);
-  }
-}
-
-// ---------------------------------------------------------------- cross-references
-// Fills absent names with "<prefix>_<index>" (unique), and reports duplicates.
-template <class Item>
-void check_names(Reader& r, std::vector<Item>& items, std::string_view section, std::string_view noun,
-                 std::string_view generated_prefix) {
-  if (!generated_prefix.empty()) {
-    std::unordered_set<std::string> taken;
-    for (const Item& item : items) taken.insert(item.name);
-    for (std::size_t i = 0; i < items.size(); ++i) {
-      if (!items[i].name.empty()) continue;
-      std::string name = std::string(generated_prefix) + "_" + std::to_string(i);
-      for (int k = 1; taken.contains(name); ++k) {
-        name = std::string(generated_prefix) + "_" + std::to_string(i) + "_" + std::to_string(k);
-      }
-      taken.insert(name);
-      items[i].name = std::move(name);
-    }
-  }
-  std::unordered_map<std::string_view, std::size_t> first_use;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (items[i].name.empty()) continue;  // already reported as missing or invalid
-    const auto [it, inserted] = first_use.emplace(items[i].name, i);
-    if (!inserted) {
-      r.log.add(element(section, i) + ".name", "duplicate " + std::string(noun) + " name " + in_quotes(items[i].name) +
-                                                   " (also used by " + element(section, it->second) + ")");
-    }
-  }
-}
-
-void check_material_references(Reader& r, const SceneDesc& scene) {
-  std::unordered_set<std::string_view> names;
-  KeyList listed;
-  for (const MaterialDesc& m : scene.materials) {
-    if (m.name.empty()) continue;
-    names.insert(m.name);
-    if (listed.size() < 10) listed.push_back(m.name);
-  }
-  const std::string known = names.empty() ? " (the scene defines no materials)"
-                                          : " (defined: " + join(listed) + (names.size() > listed.size() ? ", ...)" : ")");
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    const std::string& name = scene.objects[i].material;
-    if (!name.empty() && !names.contains(name)) {
-      r.log.add(element("objects", i) + ".material", "no material named " + in_quotes(name) + known);
-    }
-  }
-}
-
-void check_assets(Reader& r, const std::filesystem::path& base_dir) {
-  namespace fs = std::filesystem;
-  for (const auto& [at, written] : r.assets) {
-    const fs::path resolved = base_dir / fs::path(written);
-    std::error_code ec;
-    const fs::file_status status = fs::status(resolved, ec);
-    if (fs::is_regular_file(status)) continue;
-    fs::path shown = fs::absolute(resolved, ec);
-    shown = ec ? resolved : shown.lexically_normal();
-    const std::string problem = fs::exists(status) ? "not a regular file: " : "file not found: ";
-    r.log.add(at, problem + written + " (resolved to " + shown.string() + ")");
+    log.add("version", "unsupported version " + describe(*it) + " " + supported);
   }
 }
 
@@ -481,36 +406,24 @@ void check_assets(Reader& r, const std::filesystem::path& base_dir) {
 
 void read_scene_document(const nlohmann::json& doc, const std::filesystem::path& base_dir, SceneDesc& scene,
                          ErrorLog& log) {
-  Reader r{log, {}};
   if (!doc.is_object()) {
     log.add("", "expected a JSON object at the top level, got " + describe(doc));
     return;
   }
-  read_header(r, doc);
-  check_keys(r, doc, "", KeyList(std::begin(kTopLevelKeys), std::end(kTopLevelKeys)));
+  read_header(log, doc);
+  check_keys(log, doc, "", KeyList(std::begin(kTopLevelKeys), std::end(kTopLevelKeys)));
 
-  if (const auto it = doc.find("camera"); it != doc.end()) read_struct(r, *it, scene.camera, "camera");
-  if (const auto it = doc.find("render"); it != doc.end()) {
-    read_struct(r, *it, scene.render, "render");
-    const long long pixels = static_cast<long long>(scene.render.width) * scene.render.height;
-    if (pixels > kMaxImagePixels) {
-      log.add("render", "image size " + std::to_string(scene.render.width) + " x " +
-                            std::to_string(scene.render.height) + " = " + std::to_string(pixels) +
-                            " pixels is over the limit of " + std::to_string(kMaxImagePixels) + " (8192 x 8192)");
-    }
-  }
+  if (const auto it = doc.find("camera"); it != doc.end()) read_struct(log, *it, scene.camera, "camera");
+  if (const auto it = doc.find("render"); it != doc.end()) read_struct(log, *it, scene.render, "render");
   if (const auto it = doc.find("environment"); it != doc.end()) {
-    read_tagged_object(r, *it, scene.environment, "environment", "environment");
+    read_tagged_object(log, *it, scene.environment, "environment", "environment");
   }
-  read_list(r, doc, "materials", scene.materials, read_material);
-  read_list(r, doc, "objects", scene.objects, read_object);
-  read_list(r, doc, "lights", scene.lights, read_light);
+  read_list(log, doc, "materials", scene.materials, read_material);
+  read_list(log, doc, "objects", scene.objects, read_object);
+  read_list(log, doc, "lights", scene.lights, read_light);
 
-  check_names(r, scene.materials, "materials", "material", "");
-  check_names(r, scene.objects, "objects", "object", "object");
-  check_names(r, scene.lights, "lights", "light", "light");
-  check_material_references(r, scene);
-  check_assets(r, base_dir);
+  name_unnamed(scene);
+  check_scene(scene, base_dir, log);
 }
 
 }  // namespace inkray

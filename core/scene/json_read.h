@@ -12,11 +12,8 @@
 
 namespace inkray {
 
-// The largest image a scene may ask for, so a hostile file cannot make the renderer
-// allocate without bound.
-inline constexpr long long kMaxImagePixels = 8192LL * 8192LL;
-
-// Asset paths (textures, meshes) are checked to name regular files relative to base_dir.
+// Finishes with name_unnamed and check_scene (scene_checks.h): asset paths are checked
+// to name regular files relative to base_dir.
 void read_scene_document(const nlohmann::json& doc, const std::filesystem::path& base_dir, SceneDesc& scene,
                          ErrorLog& log);
 

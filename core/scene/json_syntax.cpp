@@ -56,7 +56,7 @@ class DomBuilder final : public nlohmann::json_sax<Json> {
 
   bool key(string_t& name) override {
     Frame& frame = frames_.back();
-    if (frame.value->contains(name)) log_.add(container_path(), "duplicate key \"" + name + "\"");
+    if (frame.value->contains(name)) log_.add(container_path(), "duplicate key " + in_quotes(name));
     frame.key = std::move(name);
     return true;
   }
@@ -64,8 +64,8 @@ class DomBuilder final : public nlohmann::json_sax<Json> {
   bool parse_error(std::size_t position, const std::string& last_token, const Json::exception& ex) override {
     constexpr int kNumberOverflow = 406;
     if (ex.id == kNumberOverflow) {
-      log_.add(next_value_path(), "number " + last_token + " is out of range (" +
-                                      text_position(text_, position) + ")");
+      log_.add(next_value_path(),
+               "number " + last_token + " is out of range (" + text_position(text_, position) + ")");
     } else {
       log_.add(text_position(text_, position), strip_exception_prefix(ex.what()));
     }
@@ -95,7 +95,8 @@ class DomBuilder final : public nlohmann::json_sax<Json> {
 
   bool open(Json&& container) {
     if (frames_.size() >= kMaxJsonDepth) {
-      log_.add(container_path(), "values are nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
+      log_.add(container_path(),
+               "values are nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
       return false;
     }
     // The parent cannot grow while this child is open, so the pointer stays valid.

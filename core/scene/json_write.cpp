@@ -38,8 +38,7 @@ Json value_json(const Param&, const Vec3& v) {
   return Json::array({float_to_json_number(v.x), float_to_json_number(v.y), float_to_json_number(v.z)});
 }
 template <class E>
-  requires std::is_enum_v<E>
-Json value_json(const Param& p, E e) {
+requires std::is_enum_v<E> Json value_json(const Param& p, E e) {
   const auto index = static_cast<std::size_t>(e);
   // An out-of-range value is kept as a number; the reader will name the valid choices.
   if (index < p.choices.size()) return std::string(p.choices[index]);
@@ -103,7 +102,9 @@ Json transform_json(const TransformDesc& t) {
   return object;
 }
 
-std::string dump_plain(const Json& value) { return value.dump(-1, ' ', false, Json::error_handler_t::replace); }
+std::string dump_plain(const Json& value) {
+  return value.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
 
 // Recursion is bounded by the document's own shape: we only format what we wrote.
 void append_pretty(std::string& out, const Json& value, std::size_t indent) {

@@ -25,10 +25,10 @@ namespace {
 // Statements tinyobjloader reads or ignores harmlessly. Its "t" (tags) and "vw" (skin
 // weights) extensions are left out: "t" sizes an allocation from the file.
 constexpr std::string_view kOtherStatements[] = {
-    "o",     "g",     "s",     "usemtl", "mtllib", "l",        "p",        "vp",  "cstype", "deg",
-    "bmat",  "step",  "curv",  "curv2",  "surf",   "parm",     "trim",     "hole", "scrv",  "sp",
-    "end",   "con",   "mg",    "bevel",  "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "ctech",
-    "stech", "maplib", "usemap", "call", "csh"};
+    "o",          "g",         "s",     "usemtl", "mtllib", "l",      "p",        "vp",       "cstype",
+    "deg",        "bmat",      "step",  "curv",   "curv2",  "surf",   "parm",     "trim",     "hole",
+    "scrv",       "sp",        "end",   "con",    "mg",     "bevel",  "c_interp", "d_interp", "lod",
+    "shadow_obj", "trace_obj", "ctech", "stech",  "maplib", "usemap", "call",     "csh"};
 
 struct Counts {
   long long positions = 0, uvs = 0, normals = 0, faces = 0;
@@ -70,8 +70,8 @@ std::string check_index(std::string_view token, long long count, std::string_vie
   if (index == 0) return std::string(what) + " index 0 is invalid (OBJ indices start at 1)";
   const long long resolved = index > 0 ? index : count + index + 1;  // -1 is the last one defined
   if (resolved < 1 || resolved > count) {
-    return std::string(what) + " index " + std::to_string(index) + " is out of range (" + std::to_string(count) +
-           " defined so far)";
+    return std::string(what) + " index " + std::to_string(index) + " is out of range (" +
+           std::to_string(count) + " defined so far)";
   }
   return {};
 }
@@ -83,7 +83,8 @@ std::string check_face_vertex(std::string_view token, const Counts& c) {
   std::string problem = check_index(token.substr(0, slash1), c.positions, "position");
   if (slash1 == std::string_view::npos || !problem.empty()) return problem;
   const std::size_t slash2 = token.find('/', slash1 + 1);
-  const std::string_view uv = token.substr(slash1 + 1, slash2 == std::string_view::npos ? slash2 : slash2 - slash1 - 1);
+  const std::string_view uv =
+      token.substr(slash1 + 1, slash2 == std::string_view::npos ? slash2 : slash2 - slash1 - 1);
   if (slash2 == std::string_view::npos && uv.empty()) return bad;
   if (!uv.empty()) {
     problem = check_index(uv, c.uvs, "texture coordinate");
@@ -105,7 +106,8 @@ std::string check_numbers(const std::vector<std::string_view>& tokens, std::size
   for (std::size_t i = 1; i < tokens.size(); ++i) {
     double x = 0.0;
     if (!parse_number(tokens[i], x)) {
-      return "expected " + std::string(expected) + " after \"" + std::string(tokens[0]) + "\", got " + shown(tokens[i]);
+      return "expected " + std::string(expected) + " after \"" + std::string(tokens[0]) + "\", got " +
+             shown(tokens[i]);
     }
   }
   return {};
@@ -127,10 +129,12 @@ std::string check_line(const std::vector<std::string_view>& tokens, Counts& c) {
     const std::size_t n = tokens.size() - 1;
     if (n < 3) return "expected a face with at least 3 vertices, got " + std::to_string(n);
     if (n > kMaxObjFaceVertices) {
-      return "a face with " + std::to_string(n) + " vertices (at most " + std::to_string(kMaxObjFaceVertices) +
-             " are supported)";
+      return "a face with " + std::to_string(n) + " vertices (at most " +
+             std::to_string(kMaxObjFaceVertices) + " are supported)";
     }
-    for (std::size_t i = 1; i < tokens.size() && problem.empty(); ++i) problem = check_face_vertex(tokens[i], c);
+    for (std::size_t i = 1; i < tokens.size() && problem.empty(); ++i) {
+      problem = check_face_vertex(tokens[i], c);
+    }
     ++c.faces;
   } else if (std::find(std::begin(kOtherStatements), std::end(kOtherStatements), keyword) ==
              std::end(kOtherStatements)) {
@@ -232,7 +236,9 @@ std::string build_mesh(const tinyobj::attrib_t& attrib, const std::vector<tinyob
         if (mesh.positions.size() >= std::numeric_limits<std::uint32_t>::max()) return "too many vertices";
         const auto& v = attrib.vertices;
         mesh.positions.emplace_back(float(v[3 * p]), float(v[3 * p + 1]), float(v[3 * p + 2]));
-        if (all_uvs) mesh.uvs.emplace_back(float(attrib.texcoords[2 * t]), float(attrib.texcoords[2 * t + 1]));
+        if (all_uvs) {
+          mesh.uvs.emplace_back(float(attrib.texcoords[2 * t]), float(attrib.texcoords[2 * t + 1]));
+        }
         if (all_normals) {
           const auto& vn = attrib.normals;
           mesh.normals.emplace_back(float(vn[3 * n]), float(vn[3 * n + 1]), float(vn[3 * n + 2]));
@@ -252,7 +258,8 @@ std::string first_line(std::string_view message) {
 
 }  // namespace
 
-std::optional<TriangleMeshData> parse_obj(std::string_view text, std::string_view file_label, std::string* error) {
+std::optional<TriangleMeshData> parse_obj(std::string_view text, std::string_view file_label,
+                                          std::string* error) {
   const auto fail = [&](const std::string& reason) -> std::optional<TriangleMeshData> {
     if (error) *error = std::string(file_label) + ": " + reason;
     return std::nullopt;

@@ -20,8 +20,8 @@ inline constexpr std::size_t kMaxObjFaceVertices = 256;
 
 struct TriangleMeshData {  // indexed triangles, attributes per vertex
   std::vector<Point3> positions;
-  std::vector<Normal3> normals;  // empty unless every face vertex has a normal
-  std::vector<Vec2> uvs;         // empty unless every face vertex has texture coordinates
+  std::vector<Normal3> normals;   // empty unless every face vertex has a normal
+  std::vector<Vec2> uvs;          // empty unless every face vertex has texture coordinates
   std::vector<uint32_t> indices;  // 3 per triangle
 };
 
@@ -31,6 +31,7 @@ struct TriangleMeshData {  // indexed triangles, attributes per vertex
 std::optional<TriangleMeshData> load_obj(const std::filesystem::path& file, std::string* error);
 
 // The same for text already in memory; file_label starts the error message.
-std::optional<TriangleMeshData> parse_obj(std::string_view text, std::string_view file_label, std::string* error);
+std::optional<TriangleMeshData> parse_obj(std::string_view text, std::string_view file_label,
+                                          std::string* error);
 
 }  // namespace inkray

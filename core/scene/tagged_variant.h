@@ -19,12 +19,17 @@ concept Tagged = requires {
   { T::type_name } -> std::convertible_to<std::string_view>;
 };
 
+namespace detail {
+template <class Variant, class F, std::size_t... I>
+constexpr void for_each_alternative_impl(F& f, std::index_sequence<I...>) {
+  (f(std::type_identity<std::variant_alternative_t<I, Variant>>{}), ...);
+}
+}  // namespace detail
+
 // Calls f(std::type_identity<Alternative>{}) for each alternative, in declaration order.
 template <class Variant, class F>
 constexpr void for_each_alternative(F&& f) {
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (f(std::type_identity<std::variant_alternative_t<I, Variant>>{}), ...);
-  }(std::make_index_sequence<std::variant_size_v<Variant>>{});
+  detail::for_each_alternative_impl<Variant>(f, std::make_index_sequence<std::variant_size_v<Variant>>{});
 }
 
 // "diffuse, conductor, ...": the tagged alternatives' names, for messages and docs.

@@ -72,7 +72,7 @@ TEST(GeometryReintersection, RandomTransformedSpheres) {
   ReintersectionStats st;
   for (int i = 0; i < 1000; ++i) {
     const float s = log_uniform(rng, 1e-3f, 1e3f);
-    const Transform t = Transform::translate(random_dir(rng) * log_uniform(rng, 1e-3f, 1e4f)) *
+    const Transform t = Transform::translate(random_dir(rng) * std::min(log_uniform(rng, 1e-3f, 1e4f), 1e4f * s)) *
                         Transform::rotate(360.f * rng.next_float(), random_dir(rng)) *
                         Transform::scale(Vec3(s, s * (0.5f + rng.next_float()), s * (0.5f + rng.next_float())));
     EmbreeScene scene;

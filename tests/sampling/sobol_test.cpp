@@ -35,9 +35,8 @@ TEST(SamplingSobol, EveryElementaryIntervalHoldsOnePoint) {
         for (uint32_t dim_pair : {0u, 1u, 5u, 37u}) {
           std::vector<Vec2> pts;
           for (int i = 0; i < n; ++i) {
-            Sampler s(pixel, pixel * 3, uint32_t(i), seed);
-            s.start_dimension(dim_pair);
-            pts.push_back(s.get_2d());
+            const Sampler s(pixel, pixel * 3, uint32_t(i), seed);
+            pts.push_back(s.get_pair(dim_pair));
           }
           expect_net(pts);
         }
@@ -49,32 +48,28 @@ TEST(SamplingSobol, EveryElementaryIntervalHoldsOnePoint) {
 TEST(SamplingSobol, ValuesDoNotDependOnDrawOrder) {
   std::vector<std::vector<Vec2>> forward(64);
   for (uint32_t i = 0; i < 64; ++i) {
-    Sampler s(12, 34, i, 5);
-    for (int d = 0; d < 10; ++d) forward[i].push_back(s.get_2d());
+    const Sampler s(12, 34, i, 5);
+    for (uint32_t d = 0; d < 10; ++d) forward[i].push_back(s.get_pair(d));
   }
-  // Reverse sample order, and draw dimensions out of order with start_dimension.
+  // Reverse sample order and dimension order, with fresh samplers.
   for (int i = 63; i >= 0; --i) {
     for (int d = 9; d >= 0; --d) {
-      Sampler s(12, 34, uint32_t(i), 5);
-      s.start_dimension(uint32_t(d));
-      EXPECT_EQ(s.get_2d(), forward[size_t(i)][size_t(d)]);
+      const Sampler s(12, 34, uint32_t(i), 5);
+      EXPECT_EQ(s.get_pair(uint32_t(d)), forward[size_t(i)][size_t(d)]);
     }
   }
 }
 
 TEST(SamplingSobol, PixelsAndDimensionsAreDecorrelated) {
   // Different pixels and dimension pairs must not produce the same sequence.
-  Sampler a(0, 0, 3, 1), b(1, 0, 3, 1);
-  EXPECT_NE(a.get_2d(), b.get_2d());
-  Sampler c(0, 0, 3, 1);
-  const Vec2 d0 = c.get_2d(), d1 = c.get_2d();
-  EXPECT_NE(d0, d1);
+  const Sampler a(0, 0, 3, 1), b(1, 0, 3, 1);
+  EXPECT_NE(a.get_pair(0), b.get_pair(0));
+  EXPECT_NE(a.get_pair(0), a.get_pair(1));
   // The mean over many samples of one dimension is close to 1/2.
   double sum = 0.0;
   for (uint32_t i = 0; i < 4096; ++i) {
-    Sampler s(5, 6, i, 2);
-    s.start_dimension(11);
-    sum += s.get_1d();
+    const Sampler s(5, 6, i, 2);
+    sum += s.get_pair(11).x;
   }
   EXPECT_NEAR(sum / 4096.0, 0.5, 1e-3);
 }
