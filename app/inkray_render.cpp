@@ -1,6 +1,7 @@
 // inkray-render: the headless renderer for final renders and render farms.
 #include "app/render_cli.h"
 #include "core/film/aov_display.h"
+#include "core/image/image_io.h"
 #include "core/render/batch_render.h"
 #include "core/scene/compile.h"
 #include "core/scene/json_io.h"

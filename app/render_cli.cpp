@@ -1,7 +1,7 @@
 #include "app/render_cli.h"
 
 #include "core/film/film.h"
-#include "core/film/image_io.h"
+#include "core/image/image_io.h"
 
 #include <charconv>
 #include <cmath>

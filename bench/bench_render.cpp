@@ -2,6 +2,7 @@
 // (RMSE against a cached converged reference), ray rates beside Embree's bare
 // rate for the same kind of rays, thread scaling, AOV cost and peak memory.
 #include "core/geometry/embree_scene.h"
+#include "core/image/image_io.h"
 #include "core/render/batch_render.h"
 #include "core/sampling/sampler.h"
 #include "core/sampling/warp.h"

@@ -4,7 +4,7 @@
 // no locks; a pixel is written by one thread at a time.
 #pragma once
 
-#include "core/film/image_io.h"
+#include "core/image/rgb_image.h"
 
 #include <array>
 #include <atomic>

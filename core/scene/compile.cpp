@@ -1,5 +1,6 @@
 #include "core/scene/compile.h"
 
+#include "core/image/image_io.h"
 #include "core/lights/light_sampling.h"
 #include "core/scene/obj_loader.h"
 
@@ -12,18 +13,18 @@ namespace {
 class ImageCache {
  public:
   explicit ImageCache(std::filesystem::path base) : base_(std::move(base)) {}
-  std::shared_ptr<const Image> get(const ImageTextureDesc& d, std::string* error) {
+  std::shared_ptr<const RgbImage> get(const ImageTextureDesc& d, std::string* error) {
     const std::filesystem::path file = base_ / d.path;
     const std::string key = file.string() + (d.srgb ? "#srgb" : "#linear");
     if (auto it = images_.find(key); it != images_.end()) return it->second;
-    auto image = load_image(file, d.srgb, error);
-    if (!image) return nullptr;
-    return images_[key] = std::make_shared<const Image>(std::move(*image));
+    RgbImage image;
+    if (!read_image(file, d.srgb, &image, error)) return nullptr;
+    return images_[key] = std::make_shared<const RgbImage>(std::move(image));
   }
 
  private:
   std::filesystem::path base_;
-  std::map<std::string, std::shared_ptr<const Image>> images_;
+  std::map<std::string, std::shared_ptr<const RgbImage>> images_;
 };
 
 std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images, std::string* error) {
@@ -32,7 +33,10 @@ std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images
   const auto& img = std::get<ImageTextureDesc>(input);
   auto image = images.get(img, error);
   if (!image) return std::nullopt;
-  return ImageTexture{std::move(image), img.scale};
+  glm::dvec3 sum(0.0);
+  for (const Color& c : image->pixels) sum += glm::dvec3(c);
+  const Color average = image->pixels.empty() ? Color(0.f) : Color(sum / double(image->pixels.size()));
+  return ImageTexture{std::move(image), img.scale, average};
 }
 
 std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& images, std::string* error) {

@@ -1,5 +1,5 @@
 // inkray-render end to end: exit codes, one-line errors, written images.
-#include "core/film/image_io.h"
+#include "core/image/image_io.h"
 
 #include <gtest/gtest.h>
 

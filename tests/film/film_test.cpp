@@ -1,9 +1,8 @@
-// Film accumulation, the half-buffer noise estimate, AOV gating and image files.
+// Film accumulation, the half-buffer noise estimate and AOV gating.
 #include "core/film/film.h"
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
 
 namespace inkray {
 namespace {
@@ -46,34 +45,6 @@ TEST(Film, AovsAreOnlyKeptWhenAsked) {
   film.add_first_hit(0, 0, hit);
   EXPECT_EQ(film.resolve_aov(Aov::depth).at(0, 0), Color(3.f));
   EXPECT_EQ(film.resolve_aov(Aov::albedo).at(0, 0), Color(0.f));
-}
-
-TEST(ImageIo, PfmRoundTripAndAtomicWrite) {
-  const auto dir = std::filesystem::temp_directory_path() / "inkray_image_io_test";
-  std::filesystem::create_directories(dir);
-  RgbImage img{3, 2, {Color(0.f), Color(1.f, 2.f, 3.f), Color(-1.f), Color(1e6f), Color(0.25f), Color(7.f)}};
-  std::string error;
-  ASSERT_TRUE(write_image(dir / "a.pfm", img, &error)) << error;
-  RgbImage back;
-  ASSERT_TRUE(read_pfm(dir / "a.pfm", &back, &error)) << error;
-  EXPECT_EQ(back.pixels, img.pixels);
-  ASSERT_TRUE(write_image(dir / "a.png", img, &error)) << error;
-  ASSERT_TRUE(write_image(dir / "a.exr", img, &error)) << error;
-  EXPECT_GT(std::filesystem::file_size(dir / "a.exr"), 0u);
-  // Nothing but the three images: no temporary files left behind.
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 3);
-  EXPECT_FALSE(write_image(dir / "missing" / "a.png", img, &error));
-  EXPECT_NE(error.find("missing/a.png"), std::string::npos);
-  EXPECT_FALSE(write_image(dir / "a.bmp", img, &error));
-  EXPECT_NE(error.find("expected .png, .pfm or .exr"), std::string::npos);
-  std::filesystem::remove_all(dir);
-}
-
-TEST(ImageIo, SrgbEncoding) {
-  EXPECT_EQ(linear_to_srgb(0.f), 0.f);
-  EXPECT_EQ(linear_to_srgb(1.f), 1.f);
-  EXPECT_NEAR(linear_to_srgb(0.5f), 0.7354f, 1e-4f);
-  EXPECT_EQ(linear_to_srgb(std::numeric_limits<float>::quiet_NaN()), 0.f);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-#include "core/film/image_io.h"
+#include "core/image/image_io.h"
 
+#include <stb_image.h>
 #include <stb_image_write.h>
 #include <tinyexr.h>
 
@@ -99,6 +100,8 @@ ImageFormat image_format_of(const std::filesystem::path& file) {
   return ImageFormat::unknown;
 }
 
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
 float linear_to_srgb(float c) {
   if (!(c > 0.f)) return 0.f;
   if (c >= 1.f) return 1.f;
@@ -123,6 +126,36 @@ bool write_image(const std::filesystem::path& file, const RgbImage& image, std::
   }
   *error = file.string() + ": unknown image format (expected .png, .pfm or .exr)";
   return false;
+}
+
+bool read_image(const std::filesystem::path& file, bool srgb, RgbImage* image, std::string* error) {
+  int w = 0, h = 0, channels = 0;
+  const std::string name = file.string();
+  auto fail = [&] {
+    *error = name + ": cannot read image (" + stbi_failure_reason() + ")";
+    return false;
+  };
+  image->pixels.clear();
+  if (stbi_is_hdr(name.c_str())) {
+    float* data = stbi_loadf(name.c_str(), &w, &h, &channels, 3);
+    if (!data) return fail();
+    image->pixels.resize(size_t(w) * size_t(h));
+    for (size_t i = 0; i < image->pixels.size(); ++i)
+      image->pixels[i] = {data[3 * i], data[3 * i + 1], data[3 * i + 2]};
+    stbi_image_free(data);
+  } else {
+    unsigned char* data = stbi_load(name.c_str(), &w, &h, &channels, 3);
+    if (!data) return fail();
+    float lut[256];
+    for (int i = 0; i < 256; ++i) lut[i] = srgb ? srgb_to_linear(float(i) / 255.f) : float(i) / 255.f;
+    image->pixels.resize(size_t(w) * size_t(h));
+    for (size_t i = 0; i < image->pixels.size(); ++i)
+      image->pixels[i] = {lut[data[3 * i]], lut[data[3 * i + 1]], lut[data[3 * i + 2]]};
+    stbi_image_free(data);
+  }
+  image->width = w;
+  image->height = h;
+  return true;
 }
 
 bool read_pfm(const std::filesystem::path& file, RgbImage* image, std::string* error) {
