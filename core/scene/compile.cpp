@@ -1,69 +1,13 @@
 #include "core/scene/compile.h"
 
-#include "core/image/image_io.h"
 #include "core/lights/light_sampling.h"
+#include "core/scene/compile_materials.h"
 #include "core/scene/obj_loader.h"
 
 #include <map>
 
 namespace inkray {
 namespace {
-
-// Loads each image file once per compile, however many materials use it.
-class ImageCache {
- public:
-  explicit ImageCache(std::filesystem::path base) : base_(std::move(base)) {}
-  std::shared_ptr<const RgbImage> get(const ImageTextureDesc& d, std::string* error) {
-    const std::filesystem::path file = base_ / d.path;
-    const std::string key = file.string() + (d.srgb ? "#srgb" : "#linear");
-    if (auto it = images_.find(key); it != images_.end()) return it->second;
-    RgbImage image;
-    if (!read_image(file, d.srgb, &image, error)) return nullptr;
-    return images_[key] = std::make_shared<const RgbImage>(std::move(image));
-  }
-
- private:
-  std::filesystem::path base_;
-  std::map<std::string, std::shared_ptr<const RgbImage>> images_;
-};
-
-std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images, std::string* error) {
-  if (const auto* c = std::get_if<Color>(&input)) return ConstantTexture{*c};
-  if (const auto* ch = std::get_if<CheckerTextureDesc>(&input)) return CheckerTexture{ch->even, ch->odd, ch->scale};
-  const auto& img = std::get<ImageTextureDesc>(input);
-  auto image = images.get(img, error);
-  if (!image) return std::nullopt;
-  glm::dvec3 sum(0.0);
-  for (const Color& c : image->pixels) sum += glm::dvec3(c);
-  const Color average = image->pixels.empty() ? Color(0.f) : Color(sum / double(image->pixels.size()));
-  return ImageTexture{std::move(image), img.scale, average};
-}
-
-std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& images, std::string* error) {
-  auto tex = [&](const ColorInput& c) { return compile_color(c, images, error); };
-  return std::visit(
-      [&](const auto& m) -> std::optional<Material> {
-        using T = std::decay_t<decltype(m)>;
-        if constexpr (std::is_same_v<T, DiffuseDesc>) {
-          auto t = tex(m.albedo);
-          return t ? std::optional<Material>(DiffuseMaterial{*t}) : std::nullopt;
-        } else if constexpr (std::is_same_v<T, ConductorDesc>) {
-          auto t = tex(m.color);
-          return t ? std::optional<Material>(ConductorMaterial{*t, m.roughness * m.roughness}) : std::nullopt;
-        } else if constexpr (std::is_same_v<T, DielectricDesc>) {
-          return DielectricMaterial{DielectricBsdf{m.ior, m.roughness * m.roughness, m.tint}};
-        } else if constexpr (std::is_same_v<T, EmissiveDesc>) {
-          auto t = tex(m.color);
-          return t ? std::optional<Material>(EmissiveMaterial{*t, m.strength, m.two_sided}) : std::nullopt;
-        } else if constexpr (std::is_same_v<T, UnlitDesc>) {
-          auto t = tex(m.color);
-          return t ? std::optional<Material>(UnlitMaterial{*t}) : std::nullopt;
-        } else {
-          return TransparentMaterial{m.tint};
-        }
-      },
-      desc.data);
-}
 
 std::optional<Shape> compile_shape(const ObjectDesc& obj, const std::filesystem::path& base, std::string* error) {
   const Transform to_world = transform_from_desc(obj.transform);
@@ -150,19 +94,9 @@ CompileResult compile_scene(const SceneDesc& desc) {
   scene->settings = desc.render;
   scene->camera = Camera(desc.camera, desc.render.width, desc.render.height);
 
-  ImageCache images(desc.base_dir);
+  compile_materials(desc, *scene, result.errors);
   std::map<std::string, uint32_t> material_index;
-  for (size_t i = 0; i < desc.materials.size(); ++i) {
-    std::string error;
-    auto m = compile_material(desc.materials[i], images, &error);
-    if (!m) {
-      result.errors.push_back("materials[" + std::to_string(i) + "] \"" + desc.materials[i].name + "\": " + error);
-      continue;
-    }
-    material_index[desc.materials[i].name] = uint32_t(scene->materials.size());
-    scene->materials.push_back(std::move(*m));
-    scene->material_names.push_back(desc.materials[i].name);
-  }
+  for (size_t i = 0; i < scene->material_names.size(); ++i) material_index[scene->material_names[i]] = uint32_t(i);
 
   for (size_t i = 0; i < desc.objects.size(); ++i) {
     const ObjectDesc& obj = desc.objects[i];

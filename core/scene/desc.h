@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/math/types.h"
+#include "core/scene/npr_desc.h"
 #include "core/scene/params.h"
 
 #include <array>
@@ -106,12 +107,92 @@ template <class V> void visit_params(TransparentDesc& d, V& v) {
   v(color("tint", 1, "Multiplies light passing straight through"), d.tint);
 }
 
-using MaterialVariant =
-    std::variant<DiffuseDesc, ConductorDesc, DielectricDesc, EmissiveDesc, UnlitDesc, TransparentDesc>;
+// Cel shading: light from the scene's lights (with shadows) quantised into
+// bands or mapped through a ramp, plus a specular band and a rim light.
+enum class ToonRampAxis { none, depth, facing };
+inline constexpr std::array<std::string_view, 3> kToonRampAxisNames = {"none", "depth", "facing"};
+
+struct ToonDesc {
+  static constexpr std::string_view type_name = "toon";
+  ColorInput color = Color(0.8f);      // lit colour
+  Color shadow_color{0.25f};           // multiplies `color` in the darkest band
+  int bands = 2;                        // 2 = a single cel threshold
+  float threshold = 0.5f;               // cel threshold on normalised light (first band edge)
+  float softness = 0.02f;               // width of the transition between bands
+  std::vector<Color> ramp;              // when non-empty: light level -> colour, evenly spaced stops
+  std::string ramp_image;               // optional 2D ramp (X-toon): u = light, v = ramp_axis
+  ToonRampAxis ramp_axis = ToonRampAxis::none;
+  float ramp_near = 1.f, ramp_far = 20.f;  // depth range mapped to v for ramp_axis depth
+  bool specular = true;
+  Color specular_color{1.f};
+  float specular_size = 0.1f;           // Blinn-Phong threshold: larger is a bigger highlight
+  float shininess = 40.f;
+  bool rim = false;
+  Color rim_color{1.f};
+  float rim_width = 0.3f;               // facing-ratio band width
+  float rim_threshold = 0.5f;
+  bool receive_indirect = false;        // add indirect light (bands stay on direct light)
+  bool bounce_indirect = true;          // other surfaces see it as diffuse
+};
+template <class V> void visit_params(ToonDesc& d, V& v) {
+  v(color_input("color", "Lit colour"), d.color);
+  v(color("shadow_color", 1, "Multiplies the colour in the darkest band"), d.shadow_color);
+  v(integer("bands", 2, 16, "Number of light bands; 2 is a single cel threshold"), d.bands);
+  v(number("threshold", 0, 1, "Cel threshold: light level where the first band starts"), d.threshold);
+  v(number("softness", 0, 0.5, "Width of the transition between bands"), d.softness);
+  v(color_list("ramp", "Colour ramp over the light level (evenly spaced); replaces bands when set"), d.ramp);
+  v(path("ramp_image", "2D ramp image: u = light level, v = ramp_axis (X-toon)"), d.ramp_image);
+  v(choice("ramp_axis", kToonRampAxisNames, "Second axis of the 2D ramp"), d.ramp_axis);
+  v(number("ramp_near", 0, 1e9, "Depth mapped to v = 0 when ramp_axis is depth"), d.ramp_near);
+  v(number("ramp_far", 0, 1e9, "Depth mapped to v = 1 when ramp_axis is depth"), d.ramp_far);
+  v(toggle("specular", "Add a hard specular band"), d.specular);
+  v(color("specular_color", 1e3, "Colour of the specular band"), d.specular_color);
+  v(number("specular_size", 0, 1, "Size of the specular band"), d.specular_size);
+  v(number("shininess", 1, 1e4, "Blinn-Phong exponent the band is cut from"), d.shininess);
+  v(toggle("rim", "Add a rim light"), d.rim);
+  v(color("rim_color", 1e3, "Colour of the rim light"), d.rim_color);
+  v(number("rim_width", 0, 1, "Width of the rim in facing ratio"), d.rim_width);
+  v(number("rim_threshold", 0, 1, "Rim appears where 1 - facing ratio exceeds this"), d.rim_threshold);
+  v(toggle("receive_indirect", "Add indirect light from the path tracer"), d.receive_indirect);
+  v(toggle("bounce_indirect", "Other surfaces receive light bounced off this one"), d.bounce_indirect);
+}
+
+// Blend of two other materials by a factor (a number or a texture's luminance).
+struct MixDesc {
+  static constexpr std::string_view type_name = "mix";
+  std::string a;  // material names
+  std::string b;
+  ColorInput factor = Color(0.5f);  // 0 = all a, 1 = all b
+};
+template <class V> void visit_params(MixDesc& d, V& v) {
+  v(required(text("a", "Material used where the factor is 0")), d.a);
+  v(required(text("b", "Material used where the factor is 1")), d.b);
+  v(color_input("factor", "Blend weight (luminance of a colour or texture)"), d.factor);
+}
+
+using MaterialVariant = std::variant<DiffuseDesc, ConductorDesc, DielectricDesc, EmissiveDesc, UnlitDesc,
+                                     TransparentDesc, ToonDesc, MixDesc>;
+
+// Per-material and per-object outline overrides.
+struct LineOverrideDesc {
+  bool exclude = false;          // produces no lines
+  bool stop_lines = false;       // mirrors/glass: lines are not followed through this surface
+  float width_scale = 1.f;
+  bool override_color = false;
+  Color color{0.f};
+};
+template <class V> void visit_params(LineOverrideDesc& d, V& v) {
+  v(toggle("exclude", "This surface produces no outlines"), d.exclude);
+  v(toggle("stop_lines", "Outlines are not seen through this mirror or glass"), d.stop_lines);
+  v(number("width_scale", 0, 100, "Multiplies the outline width on this surface"), d.width_scale);
+  v(toggle("override_color", "Draw this surface's lines in `color`"), d.override_color);
+  v(color("color", 1e3, "Line colour when override_color is set"), d.color);
+}
 
 struct MaterialDesc {
   std::string name;
   MaterialVariant data = DiffuseDesc{};
+  LineOverrideDesc lines;
 };
 
 // ---------------------------------------------------------------- shapes
@@ -179,11 +260,13 @@ struct ObjectDesc {
   TransformDesc transform;
   std::string material;  // name of a MaterialDesc
   bool visible = true;
+  LineOverrideDesc lines;
 };
 template <class V> void visit_params(ObjectDesc& d, V& v) {
   v(text("name", "Unique object name"), d.name);
   v(required(text("material", "Name of the object's material")), d.material);
   v(toggle("visible", "Hidden objects are not rendered"), d.visible);
+  v(group("lines", "Outline overrides for this object"), d.lines);
 }
 
 // ---------------------------------------------------------------- lights
@@ -290,6 +373,9 @@ struct RenderSettings {
   float clamp = 0.f;  // maximum sample luminance; 0 means no clamping
   PixelFilter filter = PixelFilter::box;
   float filter_radius = 0.5f;  // pixels; the box's half-width or the Gaussian's 3-sigma radius
+  PainterlyFilter painterly = PainterlyFilter::none;
+  float painterly_radius = 4.f;     // pixels at the reference height 1080
+  float painterly_sharpness = 8.f;  // sector weighting exponent
 };
 template <class V> void visit_params(RenderSettings& d, V& v) {
   v(integer("width", 1, 16384, "Image width in pixels"), d.width);
@@ -301,6 +387,9 @@ template <class V> void visit_params(RenderSettings& d, V& v) {
   v(number("clamp", 0, 1e9, "Clamp sample luminance to this value; 0 is off"), d.clamp);
   v(choice("filter", kPixelFilterNames, "Pixel reconstruction filter"), d.filter);
   v(number("filter_radius", 0.01, 8, "Filter radius in pixels"), d.filter_radius);
+  v(choice("painterly", kPainterlyFilterNames, "Painterly filter over the resolved image"), d.painterly);
+  v(number("painterly_radius", 0.5, 64, "Painterly filter radius, pixels at 1080 lines"), d.painterly_radius);
+  v(number("painterly_sharpness", 0, 64, "Painterly filter sector sharpness"), d.painterly_sharpness);
 }
 
 // ---------------------------------------------------------------- the document
@@ -311,6 +400,8 @@ struct SceneDesc {
   std::vector<ObjectDesc> objects;
   std::vector<LightDesc> lights;
   EnvironmentDesc environment = ConstantEnvironmentDesc{};
+  OutlineDesc outlines;
+  std::vector<StrokeEmitterDesc> strokes;
   // Directory that relative asset paths resolve against (the scene file's folder).
   std::filesystem::path base_dir;
 };

@@ -27,10 +27,11 @@ using KeyList = std::vector<std::string_view>;
 // visit_params: names of list entries and the object transform.
 constexpr Param kMaterialName = required(text("name", "Unique material name"));
 constexpr Param kLightName = text("name", "Unique light name");
+constexpr Param kMaterialLines = group("lines", "Outline overrides for surfaces of this material");
 constexpr Param kScale = vector("scale", "Scale factors along x, y, z; applied first");
 constexpr Param kTranslate = vector("translate", "Offset applied last");
-constexpr std::string_view kTopLevelKeys[] = {"format",      "version",   "camera",  "render",
-                                              "environment", "materials", "objects", "lights"};
+constexpr std::string_view kTopLevelKeys[] = {"format",    "version", "camera", "render",   "environment",
+                                              "materials", "objects", "lights", "outlines", "strokes"};
 
 // ---------------------------------------------------------------- message helpers
 std::string format_number(double x) {
@@ -195,6 +196,24 @@ bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string&
   return false;
 }
 
+// Colour lists (ramps): an array of colours.
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, std::vector<Color>& out) {
+  if (!j.is_array() || j.size() > 256) {
+    log.add(at, "expected an array of at most 256 colours, got " + describe(j));
+    return false;
+  }
+  Param element = p;
+  element.kind = ParamKind::color;
+  std::vector<Color> colors(j.size());
+  bool ok = true;
+  for (std::size_t i = 0; i < j.size(); ++i) ok &= read_value(log, element, j[i], element_path(at, i), colors[i]);
+  if (ok) out = std::move(colors);
+  return ok;
+}
+
+template <ParamGroup T>
+bool read_value(ErrorLog& log, const Param&, const Json& j, const std::string& at, T& out);
+
 // ---------------------------------------------------------------- structs and variants
 // The visitor handed to visit_params: reads the key a Param names, if present, and
 // records the name so unknown keys can be reported afterwards.
@@ -220,6 +239,19 @@ template <class Desc>
 void read_params(ErrorLog& log, const Json& object, Desc& desc, const std::string& at, KeyList& allowed) {
   ParamReader reader{log, object, at, allowed};
   visit_params(desc, reader);
+}
+
+void check_keys(ErrorLog& log, const Json& object, const std::string& at, const KeyList& allowed);
+bool expect_object(ErrorLog& log, const Json& j, const std::string& at, std::string_view what);
+
+// A nested struct (ParamKind::group): an object read with the struct's own parameter list.
+template <ParamGroup T>
+bool read_value(ErrorLog& log, const Param&, const Json& j, const std::string& at, T& out) {
+  if (!expect_object(log, j, at, "an object")) return false;
+  KeyList allowed;
+  read_params(log, j, out, at, allowed);
+  check_keys(log, j, at, allowed);
+  return true;
 }
 
 void check_keys(ErrorLog& log, const Json& object, const std::string& at, const KeyList& allowed) {
@@ -340,6 +372,7 @@ void read_material(ErrorLog& log, const Json& j, MaterialDesc& m, const std::str
   if (!expect_object(log, j, at, "a material object ({\"name\": ..., \"type\": ..., ...})")) return;
   KeyList allowed;
   ParamReader{log, j, at, allowed}(kMaterialName, m.name);
+  ParamReader{log, j, at, allowed}(kMaterialLines, m.lines);
   if (read_tagged(log, j, m.data, at, "material", allowed)) check_keys(log, j, at, allowed);
 }
 
@@ -421,6 +454,9 @@ void read_scene_document(const nlohmann::json& doc, const std::filesystem::path&
   read_list(log, doc, "materials", scene.materials, read_material);
   read_list(log, doc, "objects", scene.objects, read_object);
   read_list(log, doc, "lights", scene.lights, read_light);
+  if (const auto it = doc.find("outlines"); it != doc.end()) read_struct(log, *it, scene.outlines, "outlines");
+  read_list(log, doc, "strokes", scene.strokes,
+            [](ErrorLog& l, const Json& j, StrokeEmitterDesc& e, const std::string& at) { read_struct(l, j, e, at); });
 
   name_unnamed(scene);
   check_scene(scene, base_dir, log);

@@ -45,6 +45,23 @@ requires std::is_enum_v<E> Json value_json(const Param& p, E e) {
   return static_cast<long long>(e);
 }
 
+Json value_json(const Param&, const std::vector<Color>& colors) {
+  Json list = Json::array();
+  for (const Color& c : colors) list.push_back(value_json(Param{}, c));
+  return list;
+}
+
+template <class Desc>
+void write_params(Json& object, Desc desc);
+
+// A nested struct (ParamKind::group) is written as an object of its own parameters.
+template <ParamGroup T>
+Json value_json(const Param&, const T& group) {
+  Json object = Json::object();
+  write_params(object, group);
+  return object;
+}
+
 struct ParamWriter {
   Json& object;
   template <class T>
@@ -161,6 +178,7 @@ nlohmann::ordered_json write_scene_document(const SceneDesc& scene) {
     Json object = Json::object();
     object["name"] = m.name;
     write_tagged(object, m.data);
+    object["lines"] = value_json(Param{}, m.lines);
     materials.push_back(std::move(object));
   }
   doc["materials"] = std::move(materials);
@@ -182,6 +200,11 @@ nlohmann::ordered_json write_scene_document(const SceneDesc& scene) {
     lights.push_back(std::move(object));
   }
   doc["lights"] = std::move(lights);
+  doc["outlines"] = struct_json(scene.outlines);
+
+  Json strokes = Json::array();
+  for (const StrokeEmitterDesc& e : scene.strokes) strokes.push_back(struct_json(e));
+  doc["strokes"] = std::move(strokes);
   return doc;
 }
 

@@ -22,6 +22,8 @@ enum class ParamKind {
   text,       // std::string (names, references)
   path,       // std::string, a file path relative to the scene file
   choice,     // an enum with a name table
+  color_list, // std::vector<Color>, e.g. a colour ramp
+  group,      // a nested struct with its own visit_params (a JSON object)
 };
 
 struct Param {
@@ -56,9 +58,21 @@ constexpr Param path(std::string_view name, std::string_view doc) { return {name
 constexpr Param choice(std::string_view name, std::span<const std::string_view> names, std::string_view doc) {
   return {name, doc, ParamKind::choice, 0, double(names.size() - 1), names};
 }
+constexpr Param color_list(std::string_view name, std::string_view doc) {
+  return {name, doc, ParamKind::color_list, 0.0, 1e6};
+}
+constexpr Param group(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::group}; }
 constexpr Param required(Param p) {
   p.required = true;
   return p;
 }
+
+// A struct with its own parameter list: visitors treat it as a nested group.
+struct ParamProbe {
+  template <class T>
+  void operator()(const Param&, T&) {}
+};
+template <class T>
+concept ParamGroup = requires(T& t, ParamProbe& probe) { visit_params(t, probe); };
 
 }  // namespace inkray

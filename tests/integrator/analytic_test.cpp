@@ -14,8 +14,8 @@ SceneDesc sphere_in_environment(MaterialVariant material, Color environment) {
   SceneDesc d = small_scene(32, 32);
   d.camera.look_from = {0.f, 0.f, 4.f};
   d.camera.vfov = 20.f;  // the sphere fills the frame
-  d.materials.push_back({"m", std::move(material)});
-  d.objects.push_back({"sphere", SphereDesc{{0.f, 0.f, 0.f}, 1.f}, {}, "m", true});
+  d.materials.push_back({"m", std::move(material), {}});
+  d.objects.push_back({"sphere", SphereDesc{{0.f, 0.f, 0.f}, 1.f}, {}, "m", true, {}});
   d.environment = ConstantEnvironmentDesc{environment};
   return d;
 }
@@ -50,8 +50,8 @@ TEST(IntegratorAnalytic, IntegratingSphereWithPointLight) {
   d.camera.look_from = {0.f, 0.f, 1.f};
   d.camera.look_at = {0.f, 0.f, -1.f};
   d.camera.vfov = 60.f;
-  d.materials.push_back({"wall", DiffuseDesc{Color(rho)}});
-  d.objects.push_back({"shell", SphereDesc{{0.f, 0.f, 0.f}, radius}, {}, "wall", true});
+  d.materials.push_back({"wall", DiffuseDesc{Color(rho)}, {}});
+  d.objects.push_back({"shell", SphereDesc{{0.f, 0.f, 0.f}, radius}, {}, "wall", true, {}});
   d.lights.push_back({"bulb", PointLightDesc{{0.f, 0.f, 0.f}, Color(1.f), intensity}});
   const RgbImage img = render_scene(d, 512);
   const float expected = rho * intensity / (kPi * radius * radius * (1.f - rho));
@@ -68,10 +68,10 @@ TEST(IntegratorAnalytic, FloorUnderSphereLight) {
   d.camera.up = {0.f, 0.f, 1.f};
   d.camera.vfov = 1.f;  // a tiny patch of floor around the point below the light
   d.render.max_depth = 1;  // direct light only: the floor's light does not come back
-  d.materials.push_back({"floor", DiffuseDesc{Color(rho)}});
-  d.materials.push_back({"lamp", EmissiveDesc{Color(1.f), le, false}});
-  d.objects.push_back({"floor", QuadDesc{{-50.f, 0.f, -50.f}, {0.f, 0.f, 100.f}, {100.f, 0.f, 0.f}}, {}, "floor", true});
-  d.objects.push_back({"lamp", SphereDesc{{0.f, height, 0.f}, r}, {}, "lamp", true});
+  d.materials.push_back({"floor", DiffuseDesc{Color(rho)}, {}});
+  d.materials.push_back({"lamp", EmissiveDesc{Color(1.f), le, false}, {}});
+  d.objects.push_back({"floor", QuadDesc{{-50.f, 0.f, -50.f}, {0.f, 0.f, 100.f}, {100.f, 0.f, 0.f}}, {}, "floor", true, {}});
+  d.objects.push_back({"lamp", SphereDesc{{0.f, height, 0.f}, r}, {}, "lamp", true, {}});
   // The camera sits between floor and lamp; hide it from the light with nothing: it is not geometry.
   const RgbImage img = render_scene(d, 256);
   const float expected = rho * le * (r / height) * (r / height);

@@ -102,14 +102,14 @@ SceneDesc every_type_scene() {
   const std::string texture = (kValid / "textures" / "checker.png").string();
   const std::string mesh = (kData / "meshes" / "cube.obj").string();
   s.materials = {
-      {"plain", DiffuseDesc{Color(0.1f, 0.2f, 0.3f)}},
-      {"imaged", DiffuseDesc{ImageTextureDesc{texture, Color(0.5f), false}}},
-      {"checked", DiffuseDesc{CheckerTextureDesc{Color(0.9f), Color(0.05f, 0.1f, 0.15f), 3.5f}}},
-      {"metal", ConductorDesc{CheckerTextureDesc{}, 0.35f}},
-      {"glass", DielectricDesc{1.33f, 0.1f, Color(0.9f, 1.f, 0.95f)}},
-      {"lamp", EmissiveDesc{ImageTextureDesc{texture, Color(2.f), true}, 12.5f, true}},
-      {"flat", UnlitDesc{Color(0.25f)}},
-      {"clear", TransparentDesc{Color(0.6f)}},
+      {"plain", DiffuseDesc{Color(0.1f, 0.2f, 0.3f)}, {}},
+      {"imaged", DiffuseDesc{ImageTextureDesc{texture, Color(0.5f), false}}, {}},
+      {"checked", DiffuseDesc{CheckerTextureDesc{Color(0.9f), Color(0.05f, 0.1f, 0.15f), 3.5f}}, {}},
+      {"metal", ConductorDesc{CheckerTextureDesc{}, 0.35f}, {}},
+      {"glass", DielectricDesc{1.33f, 0.1f, Color(0.9f, 1.f, 0.95f)}, {}},
+      {"lamp", EmissiveDesc{ImageTextureDesc{texture, Color(2.f), true}, 12.5f, true}, {}},
+      {"flat", UnlitDesc{Color(0.25f)}, {}},
+      {"clear", TransparentDesc{Color(0.6f)}, {}},
   };
   ObjectDesc sphere = make_object("ball", SphereDesc{{1.f, 2.f, 3.f}, 0.75f}, "plain");
   ObjectDesc quad =
@@ -186,7 +186,7 @@ TEST(SceneJsonRoundTrip, FloatsSurviveBitForBit) {
   }
   values.insert(values.end(), {0.f, -0.f, 0.1f, 0.8f, 1e-45f, 3.4028235e38f, -1.17549435e-38f});
   SceneDesc scene;
-  scene.materials = {{"m", DiffuseDesc{}}};
+  scene.materials = {{"m", DiffuseDesc{}, {}}};
   for (std::size_t i = 0; i + 2 < values.size(); i += 3) {
     std::string name = "s";
     name += std::to_string(i);
@@ -210,7 +210,7 @@ TEST(SceneJsonRoundTrip, WriterIsExplicitOrderedAndReadable) {
   SceneLoadResult minimal = load_scene(kValid / "minimal.json");
   ASSERT_TRUE(minimal) << joined(minimal.errors);
   SceneDesc scene = *minimal.scene;
-  scene.materials = {{"grey", DiffuseDesc{}}};
+  scene.materials = {{"grey", DiffuseDesc{}, {}}};
   scene.objects = {make_object("ball", SphereDesc{}, "grey")};
   const std::string text = scene_to_string(scene);
   std::size_t previous = 0;
@@ -284,7 +284,7 @@ TEST(SceneJsonLoad, MinimalFileGivesDefaults) {
 TEST(SceneJsonChecks, RunWithoutJson) {
   SceneDesc s;
   s.render.width = s.render.height = 10000;
-  s.materials = {{"m", DiffuseDesc{ImageTextureDesc{"missing.png"}}}, {"m", UnlitDesc{}}};
+  s.materials = {{"m", DiffuseDesc{ImageTextureDesc{"missing.png"}}, {}}, {"m", UnlitDesc{}, {}}};
   s.objects = {make_object("", MeshDesc{"meshes/cube.obj"}, "m"), make_object("", SphereDesc{}, "gone"),
                make_object("object_0_1", SphereDesc{}, "m")};
   s.objects[0].name.clear();
@@ -413,6 +413,10 @@ TEST(SceneJsonDocs, EveryParameterIsDocumented) {
   collect_names<RenderSettings>(c);
   collect_names<ObjectDesc>(c);
   collect_names<RotationDesc>(c);
+  collect_names<OutlineDesc>(c);
+  collect_names<LineStyleDesc>(c);
+  collect_names<LineOverrideDesc>(c);
+  collect_names<StrokeEmitterDesc>(c);
   collect_alternative_names<EnvironmentDesc>(c);
   collect_alternative_names<MaterialVariant>(c);
   collect_alternative_names<ColorInput>(c);
@@ -443,7 +447,7 @@ const std::vector<BrokenCase>& broken_cases() {
       {"unsupported_version.json", {"version: version 2 is newer", "(supported: 1)"}},
       {"version_not_integer.json", {"version: expected an integer", "got \"1\""}},
       {"unknown_key.json",
-       {"objects[1]: unknown key \"materail\" (expected one of: name, material, visible, shape, transform)"}},
+       {"objects[1]: unknown key \"materail\" (expected one of: name, material, visible, lines, shape, transform)"}},
       {"unknown_top_level_key.json", {"unknown key \"camrea\" (expected one of: format, version, camera"}},
       {"unknown_texture_key.json",
        {"materials[0].albedo: unknown key \"sclae\" (expected one of: type, even, odd, scale)"}},

@@ -1,0 +1,16 @@
+// Material compilation: MaterialDesc -> the flat Material the path loop reads,
+// with textures loaded once per file.
+#pragma once
+
+#include "core/scene/render_scene.h"
+
+#include <string>
+#include <vector>
+
+namespace inkray {
+
+// Fills scene.materials and scene.material_names in document order; a material
+// that fails is left out and its error (naming materials[i]) appended.
+void compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors);
+
+}  // namespace inkray

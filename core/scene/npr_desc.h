@@ -1,0 +1,124 @@
+// The NPR parts of the scene document: outline settings, painterly stroke
+// emitters and the painterly pixel filter. Included by desc.h.
+#pragma once
+
+#include "core/math/types.h"
+#include "core/scene/params.h"
+
+#include <array>
+#include <string>
+#include <string_view>
+
+namespace inkray {
+
+// ---------------------------------------------------------------- outlines
+enum class LineWidthUnit { pixels, percent, world };
+inline constexpr std::array<std::string_view, 3> kLineWidthUnitNames = {"pixels", "percent", "world"};
+
+// One line type: on or off, with its own colour, width and opacity.
+struct LineStyleDesc {
+  bool enabled = false;
+  Color color{0.f};
+  float width = 1.f;  // multiplies OutlineDesc::width
+  float opacity = 1.f;
+  float threshold = 0.f;  // crease: angle in degrees; depth: relative jump; unused otherwise
+};
+template <class V> void visit_params(LineStyleDesc& d, V& v) {
+  v(toggle("enabled", "Draw this line type"), d.enabled);
+  v(color("color", 1e3, "Line colour (applied when the image is resolved: no re-render)"), d.color);
+  v(number("width", 0, 100, "Multiplies the outline width"), d.width);
+  v(number("opacity", 0, 1, "Line opacity"), d.opacity);
+  v(number("threshold", 0, 1e6, "Crease: angle in degrees; depth: relative distance jump"), d.threshold);
+}
+
+struct OutlineDesc {
+  int quality = 2;  // stencil rays: 4 * quality per distinct width
+  float width = 2.f;
+  LineWidthUnit unit = LineWidthUnit::pixels;
+  float reference_height = 1080.f;  // `pixels` are pixels of an image this tall
+  float distance_falloff = 0.f;     // 0: constant width; 1: width shrinks as 1/distance beyond falloff_start
+  float falloff_start = 10.f;
+  bool in_reflections = true;  // follow mirror and glass to the surface seen through them
+  LineStyleDesc silhouette{true, Color(0.f), 1.f, 1.f, 0.f};
+  LineStyleDesc object{true, Color(0.f), 1.f, 1.f, 0.f};
+  LineStyleDesc material{false, Color(0.f), 1.f, 1.f, 0.f};
+  LineStyleDesc crease{false, Color(0.f), 0.75f, 1.f, 30.f};
+  LineStyleDesc depth{false, Color(0.f), 1.f, 1.f, 0.1f};
+  LineStyleDesc intersection{false, Color(0.f), 1.f, 1.f, 0.f};
+  bool enabled = false;  // master switch; a scene without "outlines" draws none
+
+  bool any_line() const {
+    return enabled && (silhouette.enabled || object.enabled || material.enabled || crease.enabled ||
+                       depth.enabled || intersection.enabled);
+  }
+};
+template <class V> void visit_params(OutlineDesc& d, V& v) {
+  v(toggle("enabled", "Draw outlines"), d.enabled);
+  v(integer("quality", 1, 8, "Stencil rays per sample: 4 x quality"), d.quality);
+  v(number("width", 0, 1000, "Line width in `unit`"), d.width);
+  v(choice("unit", kLineWidthUnitNames,
+           "pixels (at reference_height), percent of image height, or world units"),
+    d.unit);
+  v(number("reference_height", 1, 1e5, "Image height that `pixels` refer to"), d.reference_height);
+  v(number("distance_falloff", 0, 4, "Width shrinks as (falloff_start / distance)^falloff beyond falloff_start"),
+    d.distance_falloff);
+  v(number("falloff_start", 0, 1e9, "Distance where the falloff begins"), d.falloff_start);
+  v(toggle("in_reflections", "Lines appear in mirrors and through glass"), d.in_reflections);
+  v(group("silhouette", "Where a surface meets the background or a surface behind it"), d.silhouette);
+  v(group("object", "Where one object meets another"), d.object);
+  v(group("material", "Where materials change"), d.material);
+  v(group("crease", "Where the normal bends by more than `threshold` degrees"), d.crease);
+  v(group("depth", "Where the distance jumps by more than `threshold` (relative)"), d.depth);
+  v(group("intersection", "Where two objects cross"), d.intersection);
+}
+
+// ---------------------------------------------------------------- painterly strokes
+enum class BrushKind { bristle, flat, image };
+inline constexpr std::array<std::string_view, 3> kBrushKindNames = {"bristle", "flat", "image"};
+
+struct StrokeEmitterDesc {
+  std::string name;
+  std::string object;  // the object the strokes grow on
+  int seed = 1;
+  int count = 1000;
+  float width_min = 0.02f, width_max = 0.05f;  // world units
+  float length_min = 0.1f, length_max = 0.25f;
+  Vec3 flow{0.f, 1.f, 0.f};     // projected on the tangent plane
+  float rotation_jitter = 15.f;  // degrees
+  float hue_jitter = 8.f;        // degrees
+  float saturation_jitter = 0.1f;
+  float value_jitter = 0.1f;
+  BrushKind brush = BrushKind::bristle;
+  std::string brush_image;  // PNG with alpha, for BrushKind::image
+  float bristles = 12.f;    // procedural bristle count across the stroke
+  float pressure = 0.7f;    // alpha falloff along the stroke
+  int segments = 8;         // ribbon segments along each stroke
+  float offset = 0.f;       // lift above the surface, world units; 0 picks one from the object's size
+};
+template <class V> void visit_params(StrokeEmitterDesc& d, V& v) {
+  v(text("name", "Unique emitter name"), d.name);
+  v(required(text("object", "Object the strokes grow on")), d.object);
+  v(integer("seed", 0, 2147483647, "Placement seed: the same seed gives the same strokes"), d.seed);
+  v(integer("count", 0, 10000000, "Number of strokes"), d.count);
+  v(number("width_min", 0, 1e6, "Smallest stroke width, world units"), d.width_min);
+  v(number("width_max", 0, 1e6, "Largest stroke width, world units"), d.width_max);
+  v(number("length_min", 0, 1e6, "Shortest stroke length, world units"), d.length_min);
+  v(number("length_max", 0, 1e6, "Longest stroke length, world units"), d.length_max);
+  v(direction("flow", "Flow direction, projected on the surface"), d.flow);
+  v(number("rotation_jitter", 0, 180, "Random rotation about the normal, degrees"), d.rotation_jitter);
+  v(number("hue_jitter", 0, 180, "Random hue shift, degrees"), d.hue_jitter);
+  v(number("saturation_jitter", 0, 1, "Random saturation change"), d.saturation_jitter);
+  v(number("value_jitter", 0, 1, "Random value change"), d.value_jitter);
+  v(choice("brush", kBrushKindNames, "Brush: procedural bristle or flat, or an image"), d.brush);
+  v(path("brush_image", "Brush image (PNG with alpha), for brush \"image\""), d.brush_image);
+  v(number("bristles", 1, 256, "Bristle count across a procedural stroke"), d.bristles);
+  v(number("pressure", 0, 1, "Alpha falloff along the stroke"), d.pressure);
+  v(integer("segments", 1, 64, "Ribbon segments along each stroke"), d.segments);
+  v(number("offset", 0, 1e6, "Lift above the surface; 0 picks one from the object's size"), d.offset);
+}
+
+// ---------------------------------------------------------------- painterly pixel filter
+enum class PainterlyFilter { none, kuwahara, anisotropic };
+inline constexpr std::array<std::string_view, 3> kPainterlyFilterNames = {"none", "kuwahara", "anisotropic"};
+
+}  // namespace inkray
