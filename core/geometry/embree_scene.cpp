@@ -100,6 +100,7 @@ SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit
     }
   }
   si.uv = mesh.uvs.empty() ? Vec2(b1, b2) : b0 * mesh.uvs[i0] + b1 * mesh.uvs[i1] + b2 * mesh.uvs[i2];
+  if (!mesh.colors.empty()) si.color = b0 * mesh.colors[i0] + b1 * mesh.colors[i1] + b2 * mesh.colors[i2];
   si.prim = hit.prim;
   return si;
 }

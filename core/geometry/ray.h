@@ -17,6 +17,7 @@ struct SurfaceInteraction {
   Normal3 ng{0.f, 0.f, 1.f};  // geometric normal, oriented by winding / outward for spheres
   Normal3 ns{0.f, 0.f, 1.f};  // shading normal, in ng's hemisphere
   Vec2 uv{0.f};
+  Color color{1.f};  // interpolated vertex colour (painterly strokes); multiplies base colours
   float t = 0.f;
   uint32_t object = 0;  // index into RenderScene::objects
   uint32_t prim = 0;    // triangle index within the object's mesh

@@ -15,6 +15,7 @@ struct TriangleMesh {
   std::vector<Point3> positions;
   std::vector<Normal3> normals;  // per vertex, or empty for flat shading
   std::vector<Vec2> uvs;         // per vertex, or empty
+  std::vector<Color> colors;     // per vertex, or empty (white)
   std::vector<uint32_t> indices;
 
   size_t vertex_count() const { return positions.empty() ? 0 : positions.size() - 1; }

@@ -17,7 +17,7 @@ void record_first_hit(const RenderScene& scene, const SurfaceInteraction& si, Fi
   const RenderObject& obj = scene.objects[si.object];
   out->object = int(obj.source);
   out->material = int(obj.material);
-  out->albedo = material_albedo(scene.materials[obj.material], si.uv);
+  out->albedo = material_albedo(scene.materials[obj.material], si);
   out->normal = si.ns;
   out->depth = glm::dot(si.p - scene.camera.origin(), scene.camera.forward());
 }
@@ -62,7 +62,7 @@ PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sam
     if (depth == 0 && first_hit) record_first_hit(scene, si, first_hit);
 
     if (std::holds_alternative<EmissiveMaterial>(material)) {
-      const Color le = material_emission(material, si.uv, glm::dot(wo, si.ng));
+      const Color le = material_emission(material, si, glm::dot(wo, si.ng));
       if (!is_black(le))
         result.radiance += beta * le *
                            emitter_weight(scene, scene.objects[si.object].light, after_delta, prev_pdf, prev_ref,
@@ -74,7 +74,7 @@ PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sam
       break;
     }
     if (depth >= scene.settings.max_depth) break;
-    const std::optional<Bsdf> bsdf = material_bsdf(material, si.uv);
+    const std::optional<Bsdf> bsdf = material_bsdf(material, si);
     if (!bsdf) break;
 
     // Opaque surfaces are two-sided: face them towards the viewer. Surfaces

@@ -28,7 +28,7 @@ std::optional<LightSample> surface_sample(const RenderScene& scene, const LightR
   if (!(dist2 > 0.f) || !(pdf_solid_angle > 0.f) || !std::isfinite(pdf_solid_angle)) return std::nullopt;
   LightSample s;
   s.wi = d / std::sqrt(dist2);
-  s.radiance = material_emission(scene.material_of(object), on_light.uv, glm::dot(-s.wi, on_light.ng));
+  s.radiance = material_emission(scene.material_of(object), on_light, glm::dot(-s.wi, on_light.ng));
   if (is_black(s.radiance)) return std::nullopt;
   s.pdf = pdf_solid_angle;
   s.shadow_ray = spawn_ray_to(ref.p, ref.p_error, ref.n, on_light.p, on_light.p_error, on_light.ng);
@@ -64,6 +64,7 @@ SurfaceInteraction mesh_point(const TriangleMesh& mesh, size_t tri, Vec2 b) {
   }
   si.ns = si.ng;
   si.uv = mesh.uvs.empty() ? Vec2(b1, b2) : b0 * mesh.uvs[i0] + b1 * mesh.uvs[i1] + b2 * mesh.uvs[i2];
+  if (!mesh.colors.empty()) si.color = b0 * mesh.colors[i0] + b1 * mesh.colors[i1] + b2 * mesh.colors[i2];
   si.prim = uint32_t(tri);
   return si;
 }
