@@ -1,81 +1,149 @@
+// The path loop. Toon surfaces show their cel look to the camera and through
+// mirrors and glass, and scatter as Lambertians of their colour for everything
+// else (see toon_shading.h); mixes are resolved to one side per sample.
 #include "core/integrator/path_tracer.h"
 
+#include "core/integrator/toon_shading.h"
 #include "core/lights/light_sampling.h"
 #include "core/math/frame.h"
 #include "core/sampling/warp.h"
+
+#include <utility>
 
 namespace inkray {
 namespace {
 
 // Sample dimensions: pairs 0-1 belong to the camera (see render_session.cpp);
-// each bounce owns three pairs, so a decision always draws the same dimension
-// whatever came before: (light choice, lobe choice), light position, direction.
+// each bounce owns four pairs, so a decision always draws the same dimension
+// whatever came before: (light choice, lobe choice), light position, direction,
+// (mix choice, unused). Toon lighting has its own block (toon_shading.h).
 constexpr uint32_t kCameraPairs = 2;
-constexpr uint32_t kPairsPerBounce = 3;
+constexpr uint32_t kPairsPerBounce = 4;
 
-void record_first_hit(const RenderScene& scene, const SurfaceInteraction& si, FirstHit* out) {
+struct PathState {
+  Color beta{1.f};
+  float eta_scale = 1.f;
+  bool after_delta = true;     // the camera "samples" its ray with a delta: no MIS on the first hit
+  bool specular_chain = true;  // only delta bounces since the camera: toon surfaces show their look
+  bool skip_lights =
+      false;  // the ray gathers a toon's indirect light: emission of sampled lights is its bands'
+  float prev_pdf = 0.f;
+  LightReference prev_ref;
+  Ray ray;
+  float path_length = 0.f;
+};
+
+void record_first_hit(const RenderScene& scene, const SurfaceInteraction& si, const Material& resolved,
+                      FirstHit* out) {
   const RenderObject& obj = scene.objects[si.object];
   out->object = int(obj.source);
-  out->material = int(obj.material);
-  out->albedo = material_albedo(scene.materials[obj.material], si);
+  out->material = int(obj.material);            // a mix keeps its own id, so material lines do not flicker
+  out->albedo = material_albedo(resolved, si);  // a mix's side per sample: averages to the blend
   out->normal = si.ns;
   out->depth = glm::dot(si.p - scene.camera.origin(), scene.camera.forward());
 }
 
 // MIS weight for emission found by a BSDF-sampled ray.
-float emitter_weight(const RenderScene& scene, int light, bool after_delta, float bsdf_pdf,
-                     const LightReference& from, const Vec3& dir, const SurfaceInteraction& on_light) {
-  if (after_delta || light < 0) return 1.f;
+float emitter_weight(const RenderScene& scene, int light, const PathState& st, const Vec3& dir,
+                     const SurfaceInteraction& on_light) {
+  if (st.after_delta || light < 0) return 1.f;
   const float pdf = scene.light_selection.pmf(size_t(light)) *
-                    light_pdf(scene, scene.lights[size_t(light)], from, dir, on_light);
-  return power_heuristic(bsdf_pdf, pdf);
+                    light_pdf(scene, scene.lights[size_t(light)], st.prev_ref, dir, on_light);
+  return power_heuristic(st.prev_pdf, pdf);
+}
+
+void add_escaped(const RenderScene& scene, const PathState& st, PathResult& result) {
+  if (st.skip_lights && scene.environment_light >= 0) return;
+  const Color le = scene.environment.radiance(st.ray.d);
+  if (is_black(le)) return;
+  const SurfaceInteraction nowhere;
+  result.radiance += st.beta * le * emitter_weight(scene, scene.environment_light, st, st.ray.d, nowhere);
+}
+
+// Next-event estimation: one light chosen by power, MIS-weighted against the BSDF.
+void add_direct_light(const RenderScene& scene, const Bsdf& bsdf, const Frame& frame, const Vec3& wo_local,
+                      const LightReference& ref, float u_light, Vec2 u_position, const PathState& st,
+                      PathResult& result) {
+  float pmf = 0.f;
+  const size_t li = scene.light_selection.sample(u_light, &pmf);
+  const auto ls = sample_light(scene, scene.lights[li], ref, u_position);
+  if (!ls) return;
+  const Vec3 wi_local = frame.to_local(ls->wi);
+  const Color f = bsdf_eval(bsdf, wo_local, wi_local) * std::abs(wi_local.z);
+  if (is_black(f)) return;
+  ++result.rays;
+  if (scene.geometry.occluded(ls->shadow_ray, ls->shadow_t_max)) return;
+  const float light_pdf_total = pmf * ls->pdf;
+  const float w = ls->is_delta ? 1.f : power_heuristic(light_pdf_total, bsdf_pdf(bsdf, wo_local, wi_local));
+  result.radiance += st.beta * f * ls->radiance * (w / light_pdf_total);
+}
+
+// Samples the BSDF for the next ray and applies Russian roulette; false ends the path.
+bool scatter(const Sampler& sampler, const Bsdf& bsdf, const Frame& frame, const Vec3& wo_local,
+             const SurfaceInteraction& si, const LightReference& ref, float u_lobe, Vec2 u, int depth,
+             PathState& st) {
+  const auto bs = bsdf_sample(bsdf, wo_local, u_lobe, u);
+  if (!bs) return false;
+  st.beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
+  st.after_delta = bs->is_delta;
+  st.specular_chain = st.specular_chain && bs->is_delta;
+  st.prev_pdf = bs->pdf;
+  st.prev_ref = ref;
+  if (bs->is_transmission) st.eta_scale *= sqr(bs->eta);
+  st.ray = spawn_ray(si.p, si.p_error, ref.n, frame.to_world(bs->wi));
+
+  // Russian roulette on throughput, undoing the radiance scaling of refraction
+  // so paths inside glass are not killed for it (pbrt-v4).
+  const float rr = max_component(st.beta * st.eta_scale);
+  if (rr < 1.f && depth > 1) {
+    const float q = std::max(0.f, 1.f - rr);
+    if (sampler.get_hashed(uint32_t(depth)) < q) return false;
+    st.beta /= 1.f - q;
+  }
+  return !is_black(st.beta);
 }
 
 }  // namespace
 
-PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler, FirstHit* first_hit) {
+PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler,
+                      FirstHit* first_hit) {
   PathResult result;
-  Color beta(1.f);
-  float eta_scale = 1.f;
-  bool after_delta = true;  // the camera "samples" its ray with a delta: no MIS on the first hit
-  float prev_pdf = 0.f;
-  LightReference prev_ref;
-  Ray ray = camera_ray;
+  PathState st;
+  st.ray = camera_ray;
   const bool sample_lights = !scene.light_selection.empty();
 
   for (int depth = 0;; ++depth) {
     Hit hit;
     ++result.rays;
-    if (!scene.geometry.intersect(ray, kInfinity, &hit)) {
-      const Color le = scene.environment.radiance(ray.d);
-      if (!is_black(le)) {
-        const SurfaceInteraction nowhere;
-        result.radiance += beta * le *
-                           emitter_weight(scene, scene.environment_light, after_delta, prev_pdf, prev_ref, ray.d,
-                                          nowhere);
-      }
+    if (!scene.geometry.intersect(st.ray, kInfinity, &hit)) {
+      add_escaped(scene, st, result);
       break;
     }
-    const SurfaceInteraction si = scene.geometry.interaction(ray, hit);
-    const Material& material = scene.material_of(si.object);
-    const Vec3 wo = -glm::normalize(ray.d);
-    if (depth == 0 && first_hit) record_first_hit(scene, si, first_hit);
+    const SurfaceInteraction si = scene.geometry.interaction(st.ray, hit);
+    const Vec3 wo = -glm::normalize(st.ray.d);
+    st.path_length += hit.t * glm::length(st.ray.d);
+    const uint32_t pairs = kCameraPairs + kPairsPerBounce * uint32_t(depth);
+    const bool skip_lights = std::exchange(st.skip_lights, false);
+
+    uint32_t material_index = scene.objects[si.object].material;
+    if (std::holds_alternative<MixMaterial>(scene.materials[material_index])) {
+      material_index = resolve_mix(scene.materials, material_index, si, sampler.get_pair(pairs + 3).x);
+      if (material_index == kNoMaterial) break;
+    }
+    const Material& material = scene.materials[material_index];
+    if (depth == 0 && first_hit) record_first_hit(scene, si, material, first_hit);
 
     if (std::holds_alternative<EmissiveMaterial>(material)) {
+      const int light = scene.objects[si.object].light;
       const Color le = material_emission(material, si, glm::dot(wo, si.ng));
-      if (!is_black(le))
-        result.radiance += beta * le *
-                           emitter_weight(scene, scene.objects[si.object].light, after_delta, prev_pdf, prev_ref,
-                                          ray.d, si);
+      if (!is_black(le) && !(skip_lights && light >= 0))
+        result.radiance += st.beta * le * emitter_weight(scene, light, st, st.ray.d, si);
       break;
     }
     if (const auto* unlit = std::get_if<UnlitMaterial>(&material)) {
-      result.radiance += beta * texture_eval(unlit->color, si.uv);
+      result.radiance += st.beta * texture_eval(unlit->color, si.uv);
       break;
     }
-    if (depth >= scene.settings.max_depth) break;
-    const std::optional<Bsdf> bsdf = material_bsdf(material, si);
-    if (!bsdf) break;
 
     // Opaque surfaces are two-sided: face them towards the viewer. Surfaces
     // that transmit keep their orientation, which tells inside from outside.
@@ -84,48 +152,40 @@ PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sam
       ns = -ns;
       ng = -ng;
     }
-    const Frame frame = Frame::from_z(ns);
-    const Vec3 wo_local = frame.to_local(wo);
     const LightReference ref{si.p, si.p_error, ng};
-
-    const uint32_t pairs = kCameraPairs + kPairsPerBounce * uint32_t(depth);
     const Vec2 u_choice = sampler.get_pair(pairs);  // x: which light, y: which lobe
 
-    if (sample_lights && !bsdf_is_delta(*bsdf)) {
-      float pmf = 0.f;
-      const size_t li = scene.light_selection.sample(u_choice.x, &pmf);
-      if (const auto ls = sample_light(scene, scene.lights[li], ref, sampler.get_pair(pairs + 1))) {
-        const Vec3 wi_local = frame.to_local(ls->wi);
-        const Color f = bsdf_eval(*bsdf, wo_local, wi_local) * std::abs(wi_local.z);
-        if (!is_black(f)) {
-          ++result.rays;
-          if (!scene.geometry.occluded(ls->shadow_ray, ls->shadow_t_max)) {
-            const float light_pdf_total = pmf * ls->pdf;
-            const float w = ls->is_delta ? 1.f : power_heuristic(light_pdf_total, bsdf_pdf(*bsdf, wo_local, wi_local));
-            result.radiance += beta * f * ls->radiance * (w / light_pdf_total);
-          }
-        }
-      }
+    const auto* toon = std::get_if<ToonMaterial>(&material);
+    if (toon && (st.specular_chain || !toon->bounce_indirect)) {
+      const ToonHit th{&si, wo, ns, ref, st.path_length, depth};
+      const ToonShade shade = toon_shade(scene, *toon, th, sampler, &result.rays);
+      result.radiance += st.beta * shade.radiance;
+      // Indirect light adds to the bands; the light the bands show is not gathered again.
+      if (!st.specular_chain || !toon->receive_indirect || depth >= scene.settings.max_depth) break;
+      const Frame frame = Frame::from_z(ns);
+      const Bsdf lambert = *material_bsdf(material, si);
+      if (!scatter(sampler, lambert, frame, frame.to_local(wo), si, ref, u_choice.y,
+                   sampler.get_pair(pairs + 2), depth, st))
+        break;
+      // The bands show colour * E / E_ref whatever the lights' strength; indirect
+      // irradiance is measured in the same unit, so brighter lights do not wash
+      // the bands out with bounce light.
+      if (shade.reference > 0.f) st.beta /= shade.reference;
+      st.skip_lights = true;
+      continue;
     }
 
-    const auto bs = bsdf_sample(*bsdf, wo_local, u_choice.y, sampler.get_pair(pairs + 2));
-    if (!bs) break;
-    beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
-    after_delta = bs->is_delta;
-    prev_pdf = bs->pdf;
-    prev_ref = ref;
-    if (bs->is_transmission) eta_scale *= sqr(bs->eta);
-    ray = spawn_ray(si.p, si.p_error, ng, frame.to_world(bs->wi));
-
-    // Russian roulette on throughput, undoing the radiance scaling of refraction
-    // so paths inside glass are not killed for it (pbrt-v4).
-    const float rr = max_component(beta * eta_scale);
-    if (rr < 1.f && depth > 1) {
-      const float q = std::max(0.f, 1.f - rr);
-      if (sampler.get_hashed(uint32_t(depth)) < q) break;
-      beta /= 1.f - q;
-    }
-    if (is_black(beta)) break;
+    if (depth >= scene.settings.max_depth) break;
+    const std::optional<Bsdf> bsdf = material_bsdf(material, si);
+    if (!bsdf) break;
+    const Frame frame = Frame::from_z(ns);
+    const Vec3 wo_local = frame.to_local(wo);
+    if (sample_lights && !bsdf_is_delta(*bsdf))
+      add_direct_light(scene, *bsdf, frame, wo_local, ref, u_choice.x, sampler.get_pair(pairs + 1), st,
+                       result);
+    if (!scatter(sampler, *bsdf, frame, wo_local, si, ref, u_choice.y, sampler.get_pair(pairs + 2), depth,
+                 st))
+      break;
   }
   return result;
 }

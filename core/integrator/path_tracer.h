@@ -1,5 +1,7 @@
 // The path tracer: an iterative loop with next-event estimation, multiple
-// importance sampling (power heuristic) and Russian roulette.
+// importance sampling (power heuristic) and Russian roulette. Toon surfaces show
+// their cel look along specular chains from the camera and scatter as diffuse
+// surfaces otherwise; mix materials pick one side per sample.
 #pragma once
 
 #include "core/film/film.h"
@@ -14,6 +16,7 @@ struct PathResult {
 };
 
 // Radiance along a camera ray. `first_hit` is filled when not null.
-PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler, FirstHit* first_hit);
+PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler,
+                      FirstHit* first_hit);
 
 }  // namespace inkray

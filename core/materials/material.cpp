@@ -1,6 +1,28 @@
+// Material evaluation at a hit: BSDF, emission, albedo, and resolving mixes.
 #include "core/materials/material.h"
 
+#include <algorithm>
+
 namespace inkray {
+
+uint32_t resolve_mix(std::span<const Material> materials, uint32_t index, const SurfaceInteraction& si,
+                     float u) {
+  // Acyclic mixes reach a non-mix in fewer steps than there are materials.
+  for (size_t steps = 0; steps <= materials.size() && index < materials.size(); ++steps) {
+    const auto* mix = std::get_if<MixMaterial>(&materials[index]);
+    if (!mix) return index;
+    float p = glm::clamp(luminance(texture_eval(mix->factor, si.uv)), 0.f, 1.f);
+    if (p > 1.f - 1e-6f) p = 1.f;  // white's luminance rounds just below 1; factor 1 must be all b
+    if (u < p) {
+      index = mix->b;
+      u = std::min(u / p, kOneMinusEpsilon);
+    } else {
+      index = mix->a;
+      u = std::min((u - p) / (1.f - p), kOneMinusEpsilon);
+    }
+  }
+  return kNoMaterial;
+}
 
 std::optional<Bsdf> material_bsdf(const Material& material, const SurfaceInteraction& si) {
   if (const auto* m = std::get_if<DiffuseMaterial>(&material))
@@ -9,6 +31,8 @@ std::optional<Bsdf> material_bsdf(const Material& material, const SurfaceInterac
     return ConductorBsdf{si.color * texture_eval(m->color, si.uv), m->alpha};
   if (const auto* m = std::get_if<DielectricMaterial>(&material)) return m->bsdf;
   if (const auto* m = std::get_if<TransparentMaterial>(&material)) return TransparentBsdf{m->tint};
+  if (const auto* m = std::get_if<ToonMaterial>(&material))
+    return LambertBsdf{si.color * texture_eval(m->color, si.uv)};
   return std::nullopt;
 }
 
@@ -33,12 +57,22 @@ Color material_albedo(const Material& material, const SurfaceInteraction& si) {
   return std::visit(
       [&](const auto& m) -> Color {
         using T = std::decay_t<decltype(m)>;
-        if constexpr (std::is_same_v<T, DiffuseMaterial>) return si.color * texture_eval(m.albedo, uv);
-        else if constexpr (std::is_same_v<T, ConductorMaterial>) return si.color * texture_eval(m.color, uv);
-        else if constexpr (std::is_same_v<T, DielectricMaterial>) return m.bsdf.tint;
-        else if constexpr (std::is_same_v<T, EmissiveMaterial>) return texture_eval(m.color, uv);
-        else if constexpr (std::is_same_v<T, UnlitMaterial>) return texture_eval(m.color, uv);
-        else return m.tint;
+        if constexpr (std::is_same_v<T, DiffuseMaterial>)
+          return si.color * texture_eval(m.albedo, uv);
+        else if constexpr (std::is_same_v<T, ConductorMaterial>)
+          return si.color * texture_eval(m.color, uv);
+        else if constexpr (std::is_same_v<T, DielectricMaterial>)
+          return m.bsdf.tint;
+        else if constexpr (std::is_same_v<T, EmissiveMaterial>)
+          return texture_eval(m.color, uv);
+        else if constexpr (std::is_same_v<T, UnlitMaterial>)
+          return texture_eval(m.color, uv);
+        else if constexpr (std::is_same_v<T, ToonMaterial>)
+          return si.color * texture_eval(m.color, uv);
+        else if constexpr (std::is_same_v<T, MixMaterial>)
+          return Color(0.f);  // resolved before this is asked
+        else
+          return m.tint;
       },
       material);
 }

@@ -5,8 +5,11 @@
 #include "core/geometry/ray.h"
 #include "core/materials/bsdf.h"
 #include "core/materials/texture.h"
+#include "core/materials/toon.h"
 
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <variant>
 
 namespace inkray {
@@ -32,16 +35,34 @@ struct UnlitMaterial {
 struct TransparentMaterial {
   Color tint{1.f};
 };
+// Picks material a or b per sample with probability luminance(factor) of b, so
+// the mix costs no more than either side and needs no BSDF of its own.
+struct MixMaterial {
+  uint32_t a = 0, b = 0;  // indices into RenderScene::materials; never a cycle
+  Texture factor;
+};
 
 using Material = std::variant<DiffuseMaterial, ConductorMaterial, DielectricMaterial, EmissiveMaterial,
-                              UnlitMaterial, TransparentMaterial>;
+                              UnlitMaterial, TransparentMaterial, ToonMaterial, MixMaterial>;
+
+inline constexpr uint32_t kNoMaterial = UINT32_MAX;
+// Follows mixes from `index` to a material that is not a mix, choosing b with
+// probability luminance(factor) clamped to [0, 1]. u in [0, 1) is reused for
+// nested mixes by rescaling, so one stratified number decides the whole chain.
+// Returns kNoMaterial if the chain is longer than the material list (a cycle,
+// which compilation rejects).
+uint32_t resolve_mix(std::span<const Material> materials, uint32_t index, const SurfaceInteraction& si,
+                     float u);
 
 // Materials read the hit's uv and vertex colour (si.color multiplies base colours).
-// The BSDF at a hit, or nullopt when the material does not scatter (emissive, unlit).
+// The functions below see a mix as neither scattering nor emitting: resolve it first.
+// The BSDF at a hit, or nullopt when the material does not scatter (emissive, unlit);
+// a toon surface scatters as a Lambertian of its lit colour when light bounces off it.
 std::optional<Bsdf> material_bsdf(const Material& material, const SurfaceInteraction& si);
 // Radiance leaving the surface towards a viewer on the side given by cos_ng
 // (dot of the outgoing direction and the geometric normal).
 Color material_emission(const Material& material, const SurfaceInteraction& si, float cos_ng);
+// False for a mix even over an emitter: such emission is found by BSDF sampling only.
 bool material_is_emissive(const Material& material);
 // Mean emitted radiance over the surface, for weighting light selection.
 Color material_average_emission(const Material& material);

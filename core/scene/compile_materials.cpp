@@ -1,7 +1,12 @@
+// Material compilation. Mixes refer to other materials by name, possibly to ones
+// later in the list, so they are compiled last, in dependency order, and a cycle
+// is an error rather than a loop.
 #include "core/scene/compile_materials.h"
 
 #include "core/image/image_io.h"
 
+#include <array>
+#include <deque>
 #include <map>
 
 namespace inkray {
@@ -27,7 +32,8 @@ class ImageCache {
 
 std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images, std::string* error) {
   if (const auto* c = std::get_if<Color>(&input)) return ConstantTexture{*c};
-  if (const auto* ch = std::get_if<CheckerTextureDesc>(&input)) return CheckerTexture{ch->even, ch->odd, ch->scale};
+  if (const auto* ch = std::get_if<CheckerTextureDesc>(&input))
+    return CheckerTexture{ch->even, ch->odd, ch->scale};
   const auto& img = std::get<ImageTextureDesc>(input);
   auto image = images.get(img, error);
   if (!image) return std::nullopt;
@@ -37,6 +43,49 @@ std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images
   return ImageTexture{std::move(image), img.scale, average};
 }
 
+ToonRampLookup ramp_lookup(ToonRampAxis axis) {
+  switch (axis) {
+    case ToonRampAxis::depth:
+      return ToonRampLookup::depth;
+    case ToonRampAxis::facing:
+      return ToonRampLookup::facing;
+    default:
+      return ToonRampLookup::none;
+  }
+}
+
+std::optional<Material> compile_toon(const ToonDesc& d, ImageCache& images, std::string* error) {
+  auto color = compile_color(d.color, images, error);
+  if (!color) return std::nullopt;
+  ToonMaterial m;
+  m.color = std::move(*color);
+  m.shadow_color = d.shadow_color;
+  m.bands = d.bands;
+  m.threshold = d.threshold;
+  m.softness = d.softness;
+  m.ramp = d.ramp;
+  if (!d.ramp_image.empty()) {
+    // A ramp holds colours, so 8-bit files are sRGB like colour textures.
+    m.ramp_image = images.get(ImageTextureDesc{d.ramp_image, Color(1.f), true}, error);
+    if (!m.ramp_image) return std::nullopt;
+  }
+  m.ramp_axis = ramp_lookup(d.ramp_axis);
+  m.ramp_near = d.ramp_near;
+  m.ramp_far = d.ramp_far;
+  m.specular = d.specular;
+  m.specular_color = d.specular_color;
+  m.specular_size = d.specular_size;
+  m.shininess = d.shininess;
+  m.rim = d.rim;
+  m.rim_color = d.rim_color;
+  m.rim_width = d.rim_width;
+  m.rim_threshold = d.rim_threshold;
+  m.receive_indirect = d.receive_indirect;
+  m.bounce_indirect = d.bounce_indirect;
+  return m;
+}
+
+// Everything but the indices of a mix; those are known once all materials are.
 std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& images, std::string* error) {
   auto tex = [&](const ColorInput& c) { return compile_color(c, images, error); };
   return std::visit(
@@ -58,27 +107,99 @@ std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& i
           return t ? std::optional<Material>(UnlitMaterial{*t}) : std::nullopt;
         } else if constexpr (std::is_same_v<T, TransparentDesc>) {
           return TransparentMaterial{m.tint};
+        } else if constexpr (std::is_same_v<T, ToonDesc>) {
+          return compile_toon(m, images, error);
         } else {
-          *error = "material type \"" + std::string(T::type_name) + "\" is not supported by this build yet";
-          return std::nullopt;
+          auto t = tex(m.factor);
+          return t ? std::optional<Material>(MixMaterial{0, 0, *t}) : std::nullopt;
         }
       },
       desc.data);
 }
 
+// Points each compiled mix at its sides' document indices, in dependency order
+// (Kahn's algorithm, no recursion): a mix whose sides are missing or failed
+// fails, and mixes left over are on, or behind, a cycle.
+template <class Fail>
+void resolve_mixes(const std::vector<MaterialDesc>& list, std::vector<std::optional<Material>>& compiled,
+                   Fail&& fail) {
+  std::map<std::string, size_t> by_name;
+  for (size_t i = 0; i < list.size(); ++i)
+    by_name[list[i].name] = i;  // the last of a duplicate, like objects
+  std::vector<size_t> pending(list.size(), 0);
+  std::vector<std::vector<size_t>> users(list.size());
+  std::vector<std::array<size_t, 2>> sides(list.size());
+  std::deque<size_t> ready;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const auto* d = std::get_if<MixDesc>(&list[i].data);
+    if (!d) continue;
+    const auto a = by_name.find(d->a), b = by_name.find(d->b);
+    if (compiled[i] && (a == by_name.end() || b == by_name.end()))
+      fail(i, "no material named \"" + (a == by_name.end() ? d->a : d->b) + "\"");
+    if (!compiled[i]) {  // failed already: settled, so mixes that use it are not mistaken for a cycle
+      ready.push_back(i);
+      continue;
+    }
+    sides[i] = {a->second, b->second};
+    for (size_t side : sides[i]) {
+      if (!std::holds_alternative<MixDesc>(list[side].data)) continue;
+      ++pending[i];
+      users[side].push_back(i);
+    }
+    if (pending[i] == 0) ready.push_back(i);
+  }
+  std::vector<bool> done(list.size(), false);
+  while (!ready.empty()) {
+    const size_t i = ready.front();
+    ready.pop_front();
+    done[i] = true;
+    const auto [a, b] = sides[i];
+    if (compiled[i] && (!compiled[a] || !compiled[b])) {
+      fail(i, "refers to material \"" + list[compiled[a] ? b : a].name + "\", which failed");
+    } else if (compiled[i]) {
+      auto& mix = std::get<MixMaterial>(*compiled[i]);
+      mix.a = uint32_t(a);
+      mix.b = uint32_t(b);
+    }
+    for (size_t u : users[i])
+      if (--pending[u] == 0) ready.push_back(u);
+  }
+  for (size_t i = 0; i < list.size(); ++i) {
+    if (std::holds_alternative<MixDesc>(list[i].data) && compiled[i] && !done[i])
+      fail(i, "mix is part of, or refers to, a cycle of mixes");
+  }
+}
+
 }  // namespace
 
 void compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors) {
+  const std::vector<MaterialDesc>& list = desc.materials;
   ImageCache images(desc.base_dir);
-  for (size_t i = 0; i < desc.materials.size(); ++i) {
+  std::vector<std::optional<Material>> compiled(list.size());
+  auto fail = [&](size_t i, const std::string& error) {
+    errors.push_back("materials[" + std::to_string(i) + "] \"" + list[i].name + "\": " + error);
+    compiled[i].reset();
+  };
+  for (size_t i = 0; i < list.size(); ++i) {
     std::string error;
-    auto m = compile_material(desc.materials[i], images, &error);
-    if (!m) {
-      errors.push_back("materials[" + std::to_string(i) + "] \"" + desc.materials[i].name + "\": " + error);
-      continue;
+    compiled[i] = compile_material(list[i], images, &error);
+    if (!compiled[i]) fail(i, error);
+  }
+  resolve_mixes(list, compiled, fail);
+
+  // Document order, failed materials left out; mixes' document indices remapped.
+  std::vector<uint32_t> remap(list.size(), kNoMaterial);
+  for (size_t i = 0; i < list.size(); ++i) {
+    if (!compiled[i]) continue;
+    remap[i] = uint32_t(scene.materials.size());
+    scene.materials.push_back(std::move(*compiled[i]));
+    scene.material_names.push_back(list[i].name);
+  }
+  for (Material& m : scene.materials) {
+    if (auto* mix = std::get_if<MixMaterial>(&m)) {
+      mix->a = remap[mix->a];
+      mix->b = remap[mix->b];
     }
-    scene.materials.push_back(std::move(*m));
-    scene.material_names.push_back(desc.materials[i].name);
   }
 }
 

@@ -5,6 +5,9 @@
 
 #include "core/scene/tagged_variant.h"
 
+#include <algorithm>
+#include <array>
+#include <charconv>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -64,6 +67,13 @@ std::vector<AssetRef> collect_assets(const SceneDesc& scene) {
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     AssetCollector::collect_tagged(element_path("lights", i), scene.lights[i].data, assets);
   }
+  // An emitter keeps its brush_image while another brush is chosen; only a used one must exist.
+  for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
+    if (scene.strokes[i].brush != BrushKind::image) continue;
+    StrokeEmitterDesc copy = scene.strokes[i];
+    AssetCollector collector{element_path("strokes", i), assets};
+    visit_params(copy, collector);
+  }
   return assets;
 }
 
@@ -101,21 +111,133 @@ void check_unique_names(const std::vector<Item>& items, std::string_view section
   }
 }
 
-void check_material_references(const SceneDesc& scene, ErrorLog& log) {
+// " (defined: a, b, ...)": the names a reference could have meant.
+template <class Item>
+std::string defined_names(const std::vector<Item>& items, std::string_view noun) {
   std::unordered_set<std::string_view> names;
   std::string listed;
-  for (const MaterialDesc& m : scene.materials) {
-    if (m.name.empty() || !names.insert(m.name).second) continue;
-    if (names.size() <= 10) listed += (listed.empty() ? "" : ", ") + m.name;
+  for (const Item& item : items) {
+    if (item.name.empty() || !names.insert(item.name).second) continue;
+    if (names.size() <= 10) listed += (listed.empty() ? "" : ", ") + item.name;
   }
-  const std::string known = names.empty()       ? " (the scene defines no materials)"
-                            : names.size() > 10 ? " (defined: " + listed + ", ...)"
-                                                : " (defined: " + listed + ")";
+  if (names.empty()) return " (the scene defines no " + std::string(noun) + ")";
+  return names.size() > 10 ? " (defined: " + listed + ", ...)" : " (defined: " + listed + ")";
+}
+
+template <class Item>
+std::unordered_set<std::string_view> name_set(const std::vector<Item>& items) {
+  std::unordered_set<std::string_view> names;
+  for (const Item& item : items) names.insert(item.name);
+  return names;
+}
+
+void check_material_references(const SceneDesc& scene, ErrorLog& log) {
+  const std::string known = defined_names(scene.materials, "materials");
+  const auto names = name_set(scene.materials);
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const std::string& name = scene.objects[i].material;
     if (!name.empty() && !names.contains(name)) {
       log.add(element_path("objects", i) + ".material", "no material named " + in_quotes(name) + known);
     }
+  }
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const auto* mix = std::get_if<MixDesc>(&scene.materials[i].data);
+    if (!mix) continue;
+    for (const auto& [key, name] : {std::pair{".a", &mix->a}, std::pair{".b", &mix->b}}) {
+      if (!name->empty() && !names.contains(*name))
+        log.add(element_path("materials", i) + key, "no material named " + in_quotes(*name) + known);
+    }
+  }
+}
+
+// A mix's sides as material indices (the first of a name), -1 where the side is
+// not a mix: only mixes can close a cycle.
+std::vector<std::array<int, 2>> mix_graph(const SceneDesc& scene) {
+  std::unordered_map<std::string_view, int> index;
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) index.emplace(scene.materials[i].name, int(i));
+  auto mix_named = [&](const std::string& name) {
+    const auto it = index.find(name);
+    return it != index.end() && std::holds_alternative<MixDesc>(scene.materials[std::size_t(it->second)].data)
+               ? it->second
+               : -1;
+  };
+  std::vector<std::array<int, 2>> sides(scene.materials.size(), {-1, -1});
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    if (const auto* mix = std::get_if<MixDesc>(&scene.materials[i].data))
+      sides[i] = {mix_named(mix->a), mix_named(mix->b)};
+  }
+  return sides;
+}
+
+// Each cycle is reported once, at the reference that closes it, with the chain
+// of names; depth-first search with an explicit stack, as a file may chain
+// thousands of mixes.
+void check_mix_cycles(const SceneDesc& scene, ErrorLog& log) {
+  const std::vector<std::array<int, 2>> sides = mix_graph(scene);
+  enum : char { unseen, open, closed };
+  std::vector<char> state(sides.size(), unseen);
+  struct Frame {
+    int node;
+    int next_side;
+  };
+  std::vector<Frame> stack;
+  for (std::size_t root = 0; root < sides.size(); ++root) {
+    if (state[root] != unseen || !std::holds_alternative<MixDesc>(scene.materials[root].data)) continue;
+    stack.push_back({int(root), 0});
+    state[root] = open;
+    while (!stack.empty()) {
+      const int node = stack.back().node;
+      const int side = stack.back().next_side++;
+      if (side == 2) {
+        state[std::size_t(node)] = closed;
+        stack.pop_back();
+        continue;
+      }
+      const int target = sides[std::size_t(node)][std::size_t(side)];
+      if (target < 0) continue;
+      if (state[std::size_t(target)] == unseen) {
+        state[std::size_t(target)] = open;
+        stack.push_back({target, 0});
+        continue;
+      }
+      if (state[std::size_t(target)] != open) continue;
+      const std::string at = element_path("materials", std::size_t(node)) + (side == 0 ? ".a" : ".b");
+      if (target == node) {
+        log.add(at, "mix " + in_quotes(scene.materials[std::size_t(node)].name) + " refers to itself");
+        continue;
+      }
+      std::string chain;
+      auto from = std::find_if(stack.begin(), stack.end(), [&](const Frame& f) { return f.node == target; });
+      for (; from != stack.end(); ++from)
+        chain += in_quotes(scene.materials[std::size_t(from->node)].name) + " -> ";
+      log.add(at, "mixes refer to each other in a cycle: " + chain +
+                      in_quotes(scene.materials[std::size_t(target)].name));
+    }
+  }
+}
+
+std::string shown(float x) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+void check_strokes(const SceneDesc& scene, ErrorLog& log) {
+  const std::string known = defined_names(scene.objects, "objects");
+  const auto objects = name_set(scene.objects);
+  for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
+    const StrokeEmitterDesc& e = scene.strokes[i];
+    const std::string at = element_path("strokes", i);
+    if (!e.object.empty() && !objects.contains(e.object))
+      log.add(at + ".object", "no object named " + in_quotes(e.object) + known);
+    if (e.brush == BrushKind::image && e.brush_image.empty())
+      log.add(at + ".brush_image", "required when brush is \"image\"");
+    if (e.width_min > e.width_max)
+      log.add(at + ".width_min",
+              "must not exceed width_max (" + shown(e.width_min) + " > " + shown(e.width_max) + ")");
+    if (e.length_min > e.length_max)
+      log.add(at + ".length_min",
+              "must not exceed length_max (" + shown(e.length_min) + " > " + shown(e.length_max) + ")");
   }
 }
 
@@ -138,6 +260,7 @@ void name_items(std::vector<Item>& items, std::string_view prefix) {
 void name_unnamed(SceneDesc& scene) {
   name_items(scene.objects, "object");
   name_items(scene.lights, "light");
+  name_items(scene.strokes, "strokes");
 }
 
 // Geometry that has no direction: a spot aimed at its own position, a camera
@@ -168,7 +291,10 @@ void check_scene(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log
   check_unique_names(scene.materials, "materials", "material", log);
   check_unique_names(scene.objects, "objects", "object", log);
   check_unique_names(scene.lights, "lights", "light", log);
+  check_unique_names(scene.strokes, "strokes", "stroke emitter", log);
   check_material_references(scene, log);
+  check_mix_cycles(scene, log);
+  check_strokes(scene, log);
   check_assets(scene, base_dir, log);
   check_degenerate_directions(scene, log);
 }

@@ -482,6 +482,20 @@ const std::vector<BrokenCase>& broken_cases() {
       {"camera_without_direction.json", {"camera.look_at: must differ from camera.look_from"}},
       {"camera_up_along_view.json", {"camera.up: must not be parallel to the view direction"}},
       {"many_problems.json", {"render.spp: expected an integer in [1, 1048576], got 0"}},
+      {"mix_unknown_material.json", {"materials[1].a: no material named \"paint\" (defined: rust, worn)"}},
+      {"mix_cycle.json",
+       {"materials[1].a: mixes refer to each other in a cycle: \"worn\" -> \"rusty\" -> \"worn\""}},
+      {"mix_self.json", {"materials[1].b: mix \"loop\" refers to itself"}},
+      {"toon_missing_ramp.json",
+       {"materials[0].ramp_image: file not found: ramps/sunset.png (resolved to /"}},
+      {"strokes_unknown_object.json", {"strokes[0].object: no object named \"tree\" (defined: ground)"}},
+      {"strokes_duplicate_names.json",
+       {"strokes[2].name: duplicate stroke emitter name \"grass\" (also used by strokes[0])"}},
+      {"strokes_missing_brush.json",
+       {"strokes[0].brush_image: file not found: brushes/dab.png (resolved to /"}},
+      {"strokes_brush_image_unset.json", {"strokes[0].brush_image: required when brush is \"image\""}},
+      {"strokes_width_range.json", {"strokes[0].width_min: must not exceed width_max (0.5 > 0.2)"}},
+      {"strokes_length_range.json", {"strokes[0].length_min: must not exceed length_max (1 > 0.5)"}},
   };
   return cases;
 }
