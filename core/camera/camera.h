@@ -18,6 +18,12 @@ class Camera {
   // The film position a world point projects to (pinhole projection); false if behind.
   bool project(const Point3& p, Vec2* film) const;
 
+  // Film pixels spanned by a world length at a distance along the view axis.
+  float world_to_pixels(float length, float distance) const {
+    return length * height_ / (2.f * half_height_ * std::max(distance, 1e-20f));
+  }
+  float image_height() const { return height_; }
+
   const Point3& origin() const { return origin_; }
   const Vec3& forward() const { return w_; }
 

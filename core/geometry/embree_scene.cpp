@@ -1,29 +1,18 @@
 #include "core/geometry/embree_scene.h"
 
+#include "core/geometry/embree_device.h"
 #include "core/math/float_error.h"
+#include "core/math/hash.h"
 
 #include <embree3/rtcore.h>
 
+#include <bit>
 #include <cstdio>
 #include <mutex>
 #include <stdexcept>
 
 namespace inkray {
 namespace {
-
-// One Embree device for the process: creating one costs milliseconds and
-// starts the worker threads Embree builds BVHs with.
-RTCDevice shared_device() {
-  static RTCDevice device = [] {
-    RTCDevice d = rtcNewDevice(nullptr);
-    if (!d) throw std::runtime_error("Embree: could not create a device");
-    rtcSetDeviceErrorFunction(
-        d, [](void*, RTCError code, const char* msg) { std::fprintf(stderr, "Embree error %d: %s\n", int(code), msg); },
-        nullptr);
-    return d;
-  }();
-  return device;
-}
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
   const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
@@ -54,6 +43,50 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
   auto* r = reinterpret_cast<RTCRay*>(args->ray);
   const Ray ray{{r->org_x, r->org_y, r->org_z}, {r->dir_x, r->dir_y, r->dir_z}};
   if (sphere->intersect(ray, r->tnear, r->tfar)) r->tfar = -kInfinity;
+}
+
+// What an alpha-tested geometry's filter callbacks read (its Embree user data).
+struct AlphaTested {
+  const TriangleMesh* mesh = nullptr;
+  const AlphaMask* mask = nullptr;
+};
+
+// Whether a candidate hit on an alpha-tested mesh counts. The uniform number
+// comes from a hash of the ray's bits and the triangle: the same ray always
+// decides the same way (Embree may report a triangle twice under spatial
+// splits), while the many rays of a pixel sample the coverage.
+bool alpha_accepts(const AlphaTested& g, const RTCFilterFunctionNArguments* args) {
+  RTCRayN* ray = args->ray;
+  RTCHitN* hit = args->hit;
+  const unsigned n = args->N;
+  const uint32_t prim = RTCHitN_primID(hit, n, 0);
+  const float b1 = RTCHitN_u(hit, n, 0), b2 = RTCHitN_v(hit, n, 0), b0 = 1.f - b1 - b2;
+  const Point3 o(RTCRayN_org_x(ray, n, 0), RTCRayN_org_y(ray, n, 0), RTCRayN_org_z(ray, n, 0));
+  const Vec3 d(RTCRayN_dir_x(ray, n, 0), RTCRayN_dir_y(ray, n, 0), RTCRayN_dir_z(ray, n, 0));
+  if (g.mask->layer_thickness > 0.f) {
+    // A ray leaving the surface the layer lies on (or the layer itself) starts
+    // within the layer's thickness of the triangle's plane: it passes through.
+    const Vec3 ng(RTCHitN_Ng_x(hit, n, 0), RTCHitN_Ng_y(hit, n, 0), RTCHitN_Ng_z(hit, n, 0));
+    const float ng_len = glm::length(ng);
+    const float height = RTCRayN_tfar(ray, n, 0) * std::abs(glm::dot(d, ng));
+    if (height < g.mask->layer_thickness * ng_len) return false;
+  }
+  const TriangleMesh& mesh = *g.mesh;
+  const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
+  const Vec2 uv = b0 * mesh.uvs[idx[0]] + b1 * mesh.uvs[idx[1]] + b2 * mesh.uvs[idx[2]];
+  const float alpha = g.mask->coverage(uv, prim);
+  if (alpha >= 1.f) return true;
+  if (alpha <= 0.f) return false;
+  uint32_t h = hash_combine(std::bit_cast<uint32_t>(o.x), std::bit_cast<uint32_t>(o.y),
+                            std::bit_cast<uint32_t>(o.z), prim);
+  h = hash_combine(h, std::bit_cast<uint32_t>(d.x), std::bit_cast<uint32_t>(d.y), std::bit_cast<uint32_t>(d.z));
+  return u32_to_unit_float(h) < alpha;
+}
+
+// We only call the single-ray API, so filters see N == 1.
+void alpha_filter(const RTCFilterFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  if (!alpha_accepts(*static_cast<const AlphaTested*>(args->geometryUserPtr), args)) args->valid[0] = 0;
 }
 
 RTCRay to_rtc(const Ray& ray, float t_max) {
@@ -107,13 +140,26 @@ SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit
 
 }  // namespace
 
+RTCDevice shared_embree_device() {
+  static RTCDevice device = [] {
+    RTCDevice d = rtcNewDevice(nullptr);
+    if (!d) throw std::runtime_error("Embree: could not create a device");
+    rtcSetDeviceErrorFunction(
+        d, [](void*, RTCError code, const char* msg) { std::fprintf(stderr, "Embree error %d: %s\n", int(code), msg); },
+        nullptr);
+    return d;
+  }();
+  return device;
+}
+
 struct EmbreeScene::Impl {
   RTCScene scene = nullptr;
   bool committed = false;
+  std::vector<AlphaTested> alpha_tested;  // filter user data; sized once in commit(), so addresses hold
 };
 
 EmbreeScene::EmbreeScene() : impl_(std::make_unique<Impl>()) {
-  impl_->scene = rtcNewScene(shared_device());
+  impl_->scene = rtcNewScene(shared_embree_device());
   rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
 }
@@ -125,12 +171,22 @@ EmbreeScene::~EmbreeScene() {
 uint32_t EmbreeScene::add(Shape shape) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::add after commit");
   shapes_.push_back(std::move(shape));
+  masks_.push_back(nullptr);
   return uint32_t(shapes_.size() - 1);
+}
+
+uint32_t EmbreeScene::add(TriangleMesh mesh, std::shared_ptr<const AlphaMask> mask) {
+  if (mask && mesh.uvs.size() < mesh.vertex_count())
+    throw std::invalid_argument("EmbreeScene::add: an alpha-tested mesh needs a uv per vertex");
+  const uint32_t id = add(Shape(std::move(mesh)));
+  masks_[id] = std::move(mask);
+  return id;
 }
 
 void EmbreeScene::commit() {
   // Geometries are created here, once every shape has its final address.
-  RTCDevice device = shared_device();
+  RTCDevice device = shared_embree_device();
+  impl_->alpha_tested.reserve(shapes_.size());
   for (uint32_t id = 0; id < shapes_.size(); ++id) {
     RTCGeometry geom = nullptr;
     if (auto* mesh = std::get_if<TriangleMesh>(&shapes_[id])) {
@@ -139,6 +195,12 @@ void EmbreeScene::commit() {
                                  sizeof(Point3), mesh->vertex_count());
       rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh->indices.data(), 0,
                                  3 * sizeof(uint32_t), mesh->triangle_count());
+      if (masks_[id]) {
+        impl_->alpha_tested.push_back({mesh, masks_[id].get()});
+        rtcSetGeometryUserData(geom, &impl_->alpha_tested.back());
+        rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
+        rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
+      }
     } else {
       auto& sphere = std::get<Sphere>(shapes_[id]);
       geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);

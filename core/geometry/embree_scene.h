@@ -1,8 +1,10 @@
-// The traceable geometry of a compiled scene: triangle meshes and analytic
-// spheres in one Embree BVH. Immutable after commit(); intersect() and
-// occluded() are safe to call from any number of threads.
+// The traceable geometry of a compiled scene: triangle meshes, alpha-tested
+// meshes (painterly strokes) and analytic spheres in one Embree BVH. Immutable
+// after commit(); intersect() and occluded() are safe to call from any number
+// of threads.
 #pragma once
 
+#include "core/geometry/alpha_mask.h"
 #include "core/geometry/ray.h"
 #include "core/geometry/sphere.h"
 #include "core/geometry/triangle_mesh.h"
@@ -31,6 +33,10 @@ class EmbreeScene {
 
   // Returns the shape's index; shapes must not be added after commit().
   uint32_t add(Shape shape);
+  // An alpha-tested mesh: a hit counts with probability mask->coverage(uv), decided
+  // by a hash of the ray and the triangle, so coverage anti-aliases over samples
+  // and shadow rays see partial coverage. Ordinary shapes pay nothing for it.
+  uint32_t add(TriangleMesh mesh, std::shared_ptr<const AlphaMask> mask);
   void commit();
 
   bool intersect(const Ray& ray, float t_max, Hit* hit) const;
@@ -39,6 +45,8 @@ class EmbreeScene {
 
   const Shape& shape(uint32_t index) const { return shapes_[index]; }
   size_t shape_count() const { return shapes_.size(); }
+  // The shape's alpha mask, or null for an opaque shape.
+  const AlphaMask* alpha_mask(uint32_t index) const { return masks_[index].get(); }
   // Bounds of everything, for directional and environment lights.
   void bounds(Point3* lo, Point3* hi) const;
 
@@ -48,6 +56,7 @@ class EmbreeScene {
   // Embree shares the meshes' buffers and the spheres' addresses: geometries
   // are created in commit(), after which shapes_ never reallocates.
   std::vector<Shape> shapes_;
+  std::vector<std::shared_ptr<const AlphaMask>> masks_;  // one per shape, null when opaque
 };
 
 }  // namespace inkray

@@ -2,6 +2,7 @@
 
 #include "core/lights/light_sampling.h"
 #include "core/scene/compile_materials.h"
+#include "core/scene/compile_strokes.h"
 #include "core/scene/obj_loader.h"
 
 #include <map>
@@ -80,6 +81,23 @@ EnvironmentLight compile_environment(const EnvironmentDesc& env, float scene_rad
   return e;
 }
 
+size_t material_source(const SceneDesc& desc, const ObjectDesc& obj) {
+  for (size_t m = 0; m < desc.materials.size(); ++m)
+    if (desc.materials[m].name == obj.material) return m;
+  return 0;
+}
+
+// The object's overrides win over its material's where they differ from the defaults.
+LineOverride combine_lines(const LineOverrideDesc& material, const LineOverrideDesc& object) {
+  LineOverride l;
+  l.exclude = material.exclude || object.exclude;
+  l.stop_lines = material.stop_lines || object.stop_lines;
+  l.width_scale = material.width_scale * object.width_scale;
+  l.override_color = material.override_color || object.override_color;
+  l.color = object.override_color ? object.color : material.color;
+  return l;
+}
+
 }  // namespace
 
 Transform transform_from_desc(const TransformDesc& desc) {
@@ -92,6 +110,7 @@ CompileResult compile_scene(const SceneDesc& desc) {
   CompileResult result;
   auto scene = std::make_shared<RenderScene>();
   scene->settings = desc.render;
+  scene->outlines = desc.outlines;
   scene->camera = Camera(desc.camera, desc.render.width, desc.render.height);
 
   compile_materials(desc, *scene, result.errors);
@@ -114,8 +133,12 @@ CompileResult compile_scene(const SceneDesc& desc) {
       continue;
     }
     scene->geometry.add(std::move(*shape));
-    scene->objects.push_back({obj.name, mat->second, -1, uint32_t(i)});
+    scene->objects.push_back(
+        {obj.name, mat->second, -1, uint32_t(i), combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines)});
   }
+  if (!result.errors.empty()) return result;
+  // Strokes grow on the compiled objects and join the same BVH.
+  compile_strokes(desc, *scene, result.errors);
   if (!result.errors.empty()) return result;
   scene->geometry.commit();
 

@@ -13,11 +13,21 @@
 
 namespace inkray {
 
+// Outline overrides of one object, its material's and its own combined.
+struct LineOverride {
+  bool exclude = false;     // produces no lines
+  bool stop_lines = false;  // lines are not followed through this mirror or glass
+  float width_scale = 1.f;
+  bool override_color = false;
+  Color color{0.f};
+};
+
 struct RenderObject {
   std::string name;
   uint32_t material = 0;
   int light = -1;        // index into RenderScene::lights when the object emits and is sampled
   uint32_t source = 0;   // index into SceneDesc::objects
+  LineOverride lines;
 };
 
 struct RenderScene {
@@ -31,6 +41,7 @@ struct RenderScene {
   DiscreteDistribution light_selection;  // by estimated power; empty when there are no lights
   EnvironmentLight environment;          // what escaping rays see (black by default)
   int environment_light = -1;            // index into lights when the environment is not black
+  OutlineDesc outlines;  // line types, widths and colours; any_line() false means no outline work
   Point3 scene_center{0.f};
   float scene_radius = 1.f;
 

@@ -1,0 +1,181 @@
+// Mesh surfaces: triangle picked by area, uniform barycentrics, and closest
+// points found with Embree point queries (ties go to the lowest triangle index,
+// so the answer does not depend on the BVH's traversal order).
+#include "core/npr/strokes/mesh_surface.h"
+
+#include "core/geometry/embree_device.h"
+#include "core/math/hash.h"
+
+#include <embree3/rtcore.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace inkray {
+namespace {
+
+struct Closest {
+  Point3 q{0.f};
+  float b1 = 0.f, b2 = 0.f;
+  bool interior = false;  // false when q lies on an edge or a vertex
+};
+
+// Real-Time Collision Detection (Ericson), 5.1.5, with barycentrics kept.
+Closest closest_on_triangle(const Point3& p, const Point3& a, const Point3& b, const Point3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.f && d2 <= 0.f) return {a, 0.f, 0.f, false};
+  const Vec3 bp = p - b;
+  const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.f && d4 <= d3) return {b, 1.f, 0.f, false};
+  const float vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.f && d1 >= 0.f && d3 <= 0.f) {
+    const float v = d1 / (d1 - d3);
+    return {a + v * ab, v, 0.f, false};
+  }
+  const Vec3 cp = p - c;
+  const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.f && d5 <= d6) return {c, 0.f, 1.f, false};
+  const float vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.f && d2 >= 0.f && d6 <= 0.f) {
+    const float w = d2 / (d2 - d6);
+    return {a + w * ac, 0.f, w, false};
+  }
+  const float va = d3 * d6 - d5 * d4;
+  if (va <= 0.f && d4 - d3 >= 0.f && d5 - d6 >= 0.f) {
+    const float w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {b + w * (c - b), 1.f - w, w, false};
+  }
+  const float denom = 1.f / (va + vb + vc);
+  const float v = vb * denom, w = vc * denom;
+  return {a + v * ab + w * ac, v, w, true};
+}
+
+struct QueryState {
+  const TriangleMesh* mesh = nullptr;
+  Point3 p{0.f};
+  float best_d2 = std::numeric_limits<float>::infinity();
+  uint32_t tri = UINT32_MAX;
+  Closest closest;
+};
+
+bool closest_point_callback(RTCPointQueryFunctionArguments* args) {
+  auto* st = static_cast<QueryState*>(args->userPtr);
+  const TriangleMesh& m = *st->mesh;
+  const uint32_t tri = args->primID;
+  const Closest c = closest_on_triangle(st->p, m.positions[m.indices[3 * tri]], m.positions[m.indices[3 * tri + 1]],
+                                        m.positions[m.indices[3 * tri + 2]]);
+  const Vec3 delta = st->p - c.q;
+  const float d2 = glm::dot(delta, delta);
+  if (d2 > st->best_d2 || (d2 == st->best_d2 && tri > st->tri)) return false;
+  st->best_d2 = d2;
+  st->tri = tri;
+  st->closest = c;
+  const float r = std::sqrt(d2);
+  if (r >= args->query->radius) return false;
+  args->query->radius = r;
+  return true;
+}
+
+Vec3 face_normal(const TriangleMesh& m, uint32_t tri) {
+  const Point3& a = m.positions[m.indices[3 * tri]];
+  const Vec3 n = glm::cross(m.positions[m.indices[3 * tri + 1]] - a, m.positions[m.indices[3 * tri + 2]] - a);
+  const float len = glm::length(n);
+  return len > 0.f ? n / len : Vec3(0.f, 0.f, 1.f);
+}
+
+std::vector<float> triangle_areas(const TriangleMesh& mesh) {
+  std::vector<float> areas(mesh.triangle_count());
+  for (size_t t = 0; t < areas.size(); ++t) areas[t] = mesh.triangle_area(t);
+  return areas;
+}
+
+}  // namespace
+
+struct MeshSurface::Bvh {
+  RTCScene scene = nullptr;
+  ~Bvh() {
+    if (scene) rtcReleaseScene(scene);
+  }
+};
+
+MeshSurface::MeshSurface(const TriangleMesh& mesh)
+    : mesh_(&mesh), triangles_(triangle_areas(mesh)), bvh_(std::make_unique<Bvh>()) {
+  RTCDevice device = shared_embree_device();
+  bvh_->scene = rtcNewScene(device);
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.positions.data(), 0,
+                             sizeof(Point3), mesh.vertex_count());
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.indices.data(), 0,
+                             3 * sizeof(uint32_t), mesh.triangle_count());
+  rtcCommitGeometry(geom);
+  rtcAttachGeometry(bvh_->scene, geom);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(bvh_->scene);
+}
+
+MeshSurface::~MeshSurface() = default;
+MeshSurface::MeshSurface(MeshSurface&&) noexcept = default;
+MeshSurface& MeshSurface::operator=(MeshSurface&&) noexcept = default;
+
+SurfacePoint MeshSurface::at(uint32_t tri, float b1, float b2) const {
+  const TriangleMesh& m = *mesh_;
+  const uint32_t i0 = m.indices[3 * tri], i1 = m.indices[3 * tri + 1], i2 = m.indices[3 * tri + 2];
+  const float b0 = 1.f - b1 - b2;
+  SurfacePoint sp;
+  sp.prim = tri;
+  sp.p = b0 * m.positions[i0] + b1 * m.positions[i1] + b2 * m.positions[i2];
+  sp.ng = face_normal(m, tri);
+  sp.n = sp.ng;
+  if (!m.normals.empty()) {
+    const Vec3 ns = b0 * m.normals[i0] + b1 * m.normals[i1] + b2 * m.normals[i2];
+    const float len = glm::length(ns);
+    if (len > 0.f) {
+      sp.n = ns / len;
+      // As in hit reconstruction: the shading normal says which side is outside.
+      if (glm::dot(sp.ng, sp.n) < 0.f) sp.ng = -sp.ng;
+    }
+  }
+  sp.uv = m.uvs.empty() ? Vec2(b1, b2) : b0 * m.uvs[i0] + b1 * m.uvs[i1] + b2 * m.uvs[i2];
+  if (!m.colors.empty()) sp.color = b0 * m.colors[i0] + b1 * m.colors[i1] + b2 * m.colors[i2];
+  return sp;
+}
+
+SurfacePoint MeshSurface::sample(uint32_t seed, uint32_t index) const {
+  const auto u = [&](uint32_t dim) { return u32_to_unit_float(hash_combine(seed, index, dim)); };
+  float pmf = 0.f;
+  const uint32_t tri = uint32_t(triangles_.sample(u(0), &pmf));
+  // Uniform over the triangle (pbrt-v4's square-root warp).
+  const float s = std::sqrt(u(1)), t = u(2);
+  return at(tri, s * t, 1.f - s);
+}
+
+SurfacePoint MeshSurface::project(const Point3& p) const {
+  QueryState st;
+  st.mesh = mesh_;
+  st.p = p;
+  RTCPointQuery query{};
+  query.x = p.x;
+  query.y = p.y;
+  query.z = p.z;
+  query.time = 0.f;
+  query.radius = std::numeric_limits<float>::infinity();
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(bvh_->scene, &query, &context, closest_point_callback, &st);
+  if (st.tri == UINT32_MAX) throw std::logic_error("MeshSurface::project: empty mesh");
+  SurfacePoint sp = at(st.tri, st.closest.b1, st.closest.b2);
+  sp.p = st.closest.q;
+  const float dist = std::sqrt(st.best_d2);
+  if (!st.closest.interior && mesh_->normals.empty() && dist > 1e-4f * std::sqrt(mesh_->triangle_area(st.tri))) {
+    // Past a flat-shaded edge: the direction to p is the normal of the surface
+    // rounded over that edge, between the facets that meet there.
+    Vec3 n = (p - sp.p) / dist;
+    if (glm::dot(n, sp.ng) < 0.f) n = -n;
+    sp.n = n;
+  }
+  return sp;
+}
+
+}  // namespace inkray

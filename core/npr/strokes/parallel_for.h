@@ -1,0 +1,34 @@
+// A parallel loop for building stroke geometry at compile time, when no render
+// thread pool exists yet. Items write only their own outputs, so the result is
+// the same at any thread count.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace inkray {
+
+// Calls body(begin, end) over [0, count) in chunks of `grain`, on up to one
+// thread per hardware thread; runs inline when there is a single chunk.
+template <class Body> void parallel_chunks(size_t count, size_t grain, const Body& body) {
+  grain = std::max<size_t>(grain, 1);
+  const size_t chunks = (count + grain - 1) / grain;
+  const size_t threads = std::min<size_t>(chunks, std::max(1u, std::thread::hardware_concurrency()));
+  if (threads <= 1) {
+    if (count) body(size_t(0), count);
+    return;
+  }
+  std::atomic<size_t> next{0};
+  const auto work = [&] {
+    for (size_t c = next++; c < chunks; c = next++) body(c * grain, std::min(count, (c + 1) * grain));
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+
+}  // namespace inkray

@@ -1,0 +1,35 @@
+// An analytic sphere (possibly an ellipsoid under its transform) as a surface to
+// grow strokes on: exact area-uniform sampling and exact projection.
+#pragma once
+
+#include "core/geometry/sphere.h"
+#include "core/npr/strokes/surface_point.h"
+
+namespace inkray {
+
+class SphereSurface {
+ public:
+  explicit SphereSurface(const Sphere& sphere);
+
+  double area() const { return area_; }
+  // Area-uniform point; every random number derives from (seed, index).
+  SurfacePoint sample(uint32_t seed, uint32_t index) const;
+  // The surface point on the ray from the centre (in object space) through p:
+  // exactly on the surface, and the closest point when the sphere is round.
+  SurfacePoint project(const Point3& p) const;
+  const Sphere& sphere() const { return sphere_; }
+
+ private:
+  SurfacePoint at(const glm::dvec3& n_object) const;
+  // World area per unit object-space area at the object normal n (r = 1).
+  double area_scale(const glm::dvec3& n_object) const;
+
+  Sphere sphere_;
+  glm::dmat3 m_{1.0};          // object -> world, linear part
+  glm::dmat3 normal_m_{1.0};   // inverse transpose, for normals
+  double det_ = 1.0;
+  double max_area_scale_ = 1.0;  // bound on area_scale, for rejection sampling
+  double area_ = 0.0;
+};
+
+}  // namespace inkray

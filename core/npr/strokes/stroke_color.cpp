@@ -1,0 +1,48 @@
+// Stroke colours from the material under each root.
+#include "core/npr/strokes/stroke_color.h"
+
+#include "core/image/image_io.h"
+#include "core/math/color_space.h"
+#include "core/math/hash.h"
+
+namespace inkray {
+namespace {
+
+constexpr uint32_t kColorStream = 0x7f4a7c15u;
+
+Color encode(const Color& c) { return {linear_to_srgb(c.r), linear_to_srgb(c.g), linear_to_srgb(c.b)}; }
+Color decode(const Color& c) { return {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)}; }
+
+}  // namespace
+
+Color root_color(std::span<const Material> materials, uint32_t material, const SurfacePoint& root, float mix_u) {
+  SurfaceInteraction si;
+  si.p = root.p;
+  si.ng = root.ng;
+  si.ns = root.n;
+  si.uv = root.uv;
+  si.color = root.color;
+  si.prim = root.prim;
+  const uint32_t resolved = resolve_mix(materials, material, si, mix_u);
+  if (resolved == kNoMaterial) return Color(0.f);
+  return material_albedo(materials[resolved], si);
+}
+
+std::vector<Color> stroke_colors(std::span<const Material> materials, uint32_t material,
+                                 std::span<const SurfacePoint> roots, const StrokeEmitterDesc& e) {
+  const uint32_t seed = hash_combine(uint32_t(e.seed), kColorStream);
+  std::vector<Color> colors(roots.size());
+  for (size_t i = 0; i < roots.size(); ++i) {
+    const auto u = [&](uint32_t dim) { return u32_to_unit_float(hash_combine(seed, uint32_t(i), dim)); };
+    const Color base = root_color(materials, material, roots[i], u(0));
+    // Display-space values above 1 would be clamped by the HSV edit: keep the
+    // colour's intensity out of it and put it back afterwards.
+    const float scale = std::max(1.f, max_component(base));
+    const Color jittered = jitter_hsv(encode(base / scale), e.hue_jitter * (2.f * u(1) - 1.f),
+                                      e.saturation_jitter * (2.f * u(2) - 1.f), e.value_jitter * (2.f * u(3) - 1.f));
+    colors[i] = decode(jittered) * scale;
+  }
+  return colors;
+}
+
+}  // namespace inkray

@@ -1,0 +1,24 @@
+// The paint each stroke carries: the object's material colour at the stroke's
+// root, jittered in hue, saturation and value.
+#pragma once
+
+#include "core/materials/material.h"
+#include "core/npr/strokes/surface_point.h"
+#include "core/scene/npr_desc.h"
+
+#include <span>
+#include <vector>
+
+namespace inkray {
+
+// material indexes materials; a mix is resolved per stroke (so a 50/50 mix
+// paints half the strokes in each colour). The jitter is applied to the colour
+// as displayed (sRGB-encoded), where equal steps look equal, and is drawn from
+// (emitter seed, stroke index).
+std::vector<Color> stroke_colors(std::span<const Material> materials, uint32_t material,
+                                 std::span<const SurfacePoint> roots, const StrokeEmitterDesc& emitter);
+
+// The root colour of one stroke before jitter.
+Color root_color(std::span<const Material> materials, uint32_t material, const SurfacePoint& root, float mix_u);
+
+}  // namespace inkray
