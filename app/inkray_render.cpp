@@ -1,6 +1,7 @@
 // inkray-render: the headless renderer for final renders and render farms.
 #include "app/render_cli.h"
 #include "core/film/aov_display.h"
+#include "core/film/resolve.h"
 #include "core/image/image_io.h"
 #include "core/render/batch_render.h"
 #include "core/scene/compile.h"
@@ -67,7 +68,7 @@ int run(const RenderCliOptions& opt) {
   if (progress) std::fprintf(stderr, "\n");
 
   std::string error;
-  if (!write_image(opt.output, session.film().resolve(), &error)) {
+  if (!write_image(opt.output, resolve_final(session.film(), session.scene(), &session.pool()), &error)) {
     std::fprintf(stderr, "error: %s\n", error.c_str());
     return 1;
   }

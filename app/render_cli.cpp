@@ -20,8 +20,10 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
   --threads N           worker threads (default: one per hardware thread)
   --width W --height H  override the scene's resolution (the aspect ratio follows)
   --seed S              seed of every random decision (default: the scene's render.seed)
-  --aov NAME=FILE       also write a first-hit AOV; NAME is one of albedo, normal, depth, object_id,
-                        material_id; may be repeated
+  --aov NAME=FILE       also write an AOV; may be repeated. NAME is a first-hit AOV (albedo, normal,
+                        depth, object_id, material_id) or an outline opacity: outline (all line
+                        types) or outline_depth, outline_crease, outline_intersection,
+                        outline_material, outline_object, outline_silhouette (one type each)
   -q, --quiet           no progress bar
   -h, --help            this text
 
@@ -106,7 +108,7 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       const size_t eq = v->find('=');
       const std::string_view name = v->substr(0, eq);
       if (eq == std::string_view::npos || eq + 1 == v->size() || !aov_from_name(name)) {
-        *error = "--aov: expected NAME=FILE with NAME one of albedo, normal, depth, object_id, material_id; got \"" +
+        *error = "--aov: expected NAME=FILE with NAME one of " + aov_name_list() + "; got \"" +
                  std::string(*v) + "\"";
         return std::nullopt;
       }

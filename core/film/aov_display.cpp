@@ -34,6 +34,7 @@ RgbImage aov_for_display(Aov aov, const RgbImage& raw) {
         c = Color(0.2f) + 0.8f * Color(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u)) / 255.f;
       }
       break;
+    default: break;  // outline opacities are already in [0, 1]
   }
   return out;
 }

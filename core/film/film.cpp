@@ -10,7 +10,16 @@ std::optional<Aov> aov_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-Film::Film(int width, int height, AovSet aovs) : width_(width), height_(height), aovs_(aovs) {
+std::string aov_name_list() {
+  std::string list;
+  for (const std::string_view name : kAovNames) {
+    if (!list.empty()) list += ", ";
+    list += name;
+  }
+  return list;
+}
+
+Film::Film(int width, int height, AovSet aovs, bool lines) : width_(width), height_(height), aovs_(aovs) {
   const size_t n = size_t(width) * size_t(height);
   for (int h = 0; h < 2; ++h) {
     sum_[h].assign(n, Color(0.f));
@@ -23,10 +32,14 @@ Film::Film(int width, int height, AovSet aovs) : width_(width), height_(height),
   if (aovs.has(Aov::albedo) || aovs.has(Aov::normal) || aovs.has(Aov::depth)) hit_count_.assign(n, 0);
   if (aovs.has(Aov::object_id)) object_id_.assign(n, -2);
   if (aovs.has(Aov::material_id)) material_id_.assign(n, -2);
+  if (lines) {
+    line_sum_.assign(n, LineSample{});
+    line_count_.assign(n, 0);
+  }
 }
 
 void Film::clear() {
-  Film fresh(width_, height_, aovs_);
+  Film fresh(width_, height_, aovs_, has_lines());
   sum_ = std::move(fresh.sum_);
   count_ = std::move(fresh.count_);
   albedo_sum_ = std::move(fresh.albedo_sum_);
@@ -35,6 +48,8 @@ void Film::clear() {
   hit_count_ = std::move(fresh.hit_count_);
   object_id_ = std::move(fresh.object_id_);
   material_id_ = std::move(fresh.material_id_);
+  line_sum_ = std::move(fresh.line_sum_);
+  line_count_ = std::move(fresh.line_count_);
   nonfinite_ = 0;
 }
 
@@ -61,6 +76,29 @@ void Film::add_first_hit(int x, int y, const FirstHit& hit) {
   if (!depth_sum_.empty()) depth_sum_[i] += hit.depth;
 }
 
+void Film::add_lines(int x, int y, const LineSample& lines) {
+  const size_t i = index(x, y);
+  LineSample& sum = line_sum_[i];
+  for (size_t t = 0; t < sum.coverage.size(); ++t) sum.coverage[t] += lines.coverage[t];
+  sum.weight += lines.weight;
+  sum.override_weight += lines.override_weight;
+  sum.override_color += lines.override_color;
+  ++line_count_[i];
+}
+
+LineSample Film::line_mean(int x, int y) const {
+  if (line_sum_.empty()) return {};
+  const size_t i = index(x, y);
+  if (!line_count_[i]) return {};
+  LineSample mean = line_sum_[i];
+  const float inv = 1.f / float(line_count_[i]);
+  for (float& c : mean.coverage) c *= inv;
+  mean.weight *= inv;
+  mean.override_weight *= inv;
+  mean.override_color *= inv;
+  return mean;
+}
+
 uint32_t Film::samples_at(int x, int y) const { return count_[0][index(x, y)] + count_[1][index(x, y)]; }
 
 RgbImage Film::resolve() const {
@@ -74,6 +112,20 @@ RgbImage Film::resolve() const {
 
 RgbImage Film::resolve_aov(Aov aov) const {
   RgbImage img{width_, height_, std::vector<Color>(size_t(width_) * size_t(height_), Color(0.f))};
+  if (is_outline_aov(aov)) {
+    for (int y = 0; y < height_; ++y)
+      for (int x = 0; x < width_; ++x) {
+        const LineSample m = line_mean(x, y);
+        float opacity = 0.f;
+        if (aov == Aov::outline) {
+          for (const float c : m.coverage) opacity = std::max(opacity, line_opacity(c));
+        } else {
+          opacity = line_opacity(m.coverage[size_t(aov) - size_t(Aov::outline_depth)]);
+        }
+        img.pixels[index(x, y)] = Color(opacity);
+      }
+    return img;
+  }
   if (!aovs_.has(aov)) return img;
   for (size_t i = 0; i < img.pixels.size(); ++i) {
     const float hits = hit_count_.empty() ? 0.f : float(hit_count_[i]);
@@ -87,6 +139,7 @@ RgbImage Film::resolve_aov(Aov aov) const {
       case Aov::depth: img.pixels[i] = Color(hits ? depth_sum_[i] / hits : 0.f); break;
       case Aov::object_id: img.pixels[i] = Color(float(object_id_[i] < -1 ? -1 : object_id_[i])); break;
       case Aov::material_id: img.pixels[i] = Color(float(material_id_[i] < -1 ? -1 : material_id_[i])); break;
+      default: break;  // outline AOVs are handled above
     }
   }
   return img;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/image/rgb_image.h"
+#include "core/npr/outlines/line_types.h"
 
 #include <array>
 #include <atomic>
@@ -14,17 +15,30 @@
 
 namespace inkray {
 
-enum class Aov { albedo, normal, depth, object_id, material_id };
-inline constexpr std::array<std::string_view, 5> kAovNames = {"albedo", "normal", "depth", "object_id",
-                                                                "material_id"};
+// First-hit AOVs, then the outline coverage: all types together, then one per
+// type in LineType order (debug views).
+enum class Aov {
+  albedo, normal, depth, object_id, material_id,
+  outline, outline_depth, outline_crease, outline_intersection, outline_material, outline_object,
+  outline_silhouette
+};
+inline constexpr std::array<std::string_view, 12> kAovNames = {
+    "albedo",          "normal",         "depth",
+    "object_id",       "material_id",    "outline",
+    "outline_depth",   "outline_crease", "outline_intersection",
+    "outline_material", "outline_object", "outline_silhouette"};
 std::optional<Aov> aov_from_name(std::string_view name);
+inline bool is_outline_aov(Aov a) { return uint32_t(a) >= uint32_t(Aov::outline); }
+// "albedo, normal, ..." for help texts and error messages.
+std::string aov_name_list();
 
-// Which AOVs to keep: the integrator records nothing for the others.
+// Which AOVs to keep: the integrator records nothing for the others. Outline
+// AOVs read the outline buffers, which exist whenever the scene draws lines.
 struct AovSet {
   uint32_t bits = 0;
   bool has(Aov a) const { return bits & (1u << uint32_t(a)); }
   void add(Aov a) { bits |= 1u << uint32_t(a); }
-  bool any() const { return bits != 0; }
+  bool any_first_hit() const { return bits & ((1u << uint32_t(Aov::outline)) - 1u); }
 };
 
 // What the camera sample saw at its first hit.
@@ -38,15 +52,18 @@ struct FirstHit {
 
 class Film {
  public:
-  Film(int width, int height, AovSet aovs);
+  // `lines`: keep outline coverage (the scene draws lines).
+  Film(int width, int height, AovSet aovs, bool lines = false);
 
   int width() const { return width_; }
   int height() const { return height_; }
   const AovSet& aovs() const { return aovs_; }
+  bool has_lines() const { return !line_sum_.empty(); }
 
   // `pass` selects the half-buffer. Non-finite values are counted and dropped.
   void add_sample(int x, int y, uint32_t pass, const Color& radiance);
   void add_first_hit(int x, int y, const FirstHit& hit);
+  void add_lines(int x, int y, const LineSample& lines);
   void clear();
 
   uint64_t nonfinite_samples() const { return nonfinite_.load(std::memory_order_relaxed); }
@@ -54,8 +71,11 @@ class Film {
 
   // Mean radiance per pixel.
   RgbImage resolve() const;
-  // AOV image: averages for albedo/normal/depth, ids as floats (-1 where nothing was hit).
+  // AOV image: averages for albedo/normal/depth, ids as floats (-1 where nothing
+  // was hit), line opacities in [0, 1] for the outline AOVs.
   RgbImage resolve_aov(Aov aov) const;
+  // Mean outline contribution of a pixel's samples (zero without lines).
+  LineSample line_mean(int x, int y) const;
   // Estimated relative RMS error of the mean image from the half-buffer
   // difference: sqrt(mean((a-b)^2)/4) / mean(luminance), over luminance.
   double estimated_relative_error() const;
@@ -71,6 +91,8 @@ class Film {
   std::vector<float> depth_sum_;
   std::vector<uint32_t> hit_count_;
   std::vector<int> object_id_, material_id_;
+  std::vector<LineSample> line_sum_;
+  std::vector<uint32_t> line_count_;
   std::atomic<uint64_t> nonfinite_{0};
 };
 

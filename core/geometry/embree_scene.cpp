@@ -121,19 +121,12 @@ SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit
   si.p_error = Vec3(gamma_bound(7) * max_component(glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2)));
   const Vec3 n = glm::cross(p1 - p0, p2 - p0);
   const float len = glm::length(n);
-  si.ng = len > 0.f ? n / len : -glm::normalize(ray.d);
-  si.ns = si.ng;
-  if (!mesh.normals.empty()) {
-    const Vec3 ns = b0 * mesh.normals[i0] + b1 * mesh.normals[i1] + b2 * mesh.normals[i2];
-    const float ns_len = glm::length(ns);
-    if (ns_len > 0.f) {
-      si.ns = ns / ns_len;
-      // Keep the geometric normal on the side the shading normal says is outside.
-      if (glm::dot(si.ng, si.ns) < 0.f) si.ng = -si.ng;
-    }
-  }
-  si.uv = mesh.uvs.empty() ? Vec2(b1, b2) : b0 * mesh.uvs[i0] + b1 * mesh.uvs[i1] + b2 * mesh.uvs[i2];
-  if (!mesh.colors.empty()) si.color = b0 * mesh.colors[i0] + b1 * mesh.colors[i1] + b2 * mesh.colors[i2];
+  const MeshShading shading =
+      interpolate_shading(mesh, hit.prim, b1, b2, len > 0.f ? n / len : -glm::normalize(ray.d));
+  si.ng = shading.ng;
+  si.ns = shading.ns;
+  si.uv = shading.uv;
+  si.color = shading.color;
   si.prim = hit.prim;
   return si;
 }

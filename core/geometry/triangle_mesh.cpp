@@ -11,6 +11,27 @@ float TriangleMesh::triangle_area(size_t tri) const {
   return 0.5f * glm::length(glm::cross(b - a, c - a));
 }
 
+MeshShading interpolate_shading(const TriangleMesh& mesh, uint32_t tri, float b1, float b2, const Normal3& ng) {
+  const uint32_t i0 = mesh.indices[3 * size_t(tri)], i1 = mesh.indices[3 * size_t(tri) + 1],
+                 i2 = mesh.indices[3 * size_t(tri) + 2];
+  const float b0 = 1.f - b1 - b2;
+  MeshShading s;
+  s.ng = ng;
+  s.ns = ng;
+  if (!mesh.normals.empty()) {
+    const Vec3 ns = b0 * mesh.normals[i0] + b1 * mesh.normals[i1] + b2 * mesh.normals[i2];
+    const float ns_len = glm::length(ns);
+    if (ns_len > 0.f) {
+      s.ns = ns / ns_len;
+      // Keep the geometric normal on the side the shading normal says is outside.
+      if (glm::dot(s.ng, s.ns) < 0.f) s.ng = -s.ng;
+    }
+  }
+  s.uv = mesh.uvs.empty() ? Vec2(b1, b2) : b0 * mesh.uvs[i0] + b1 * mesh.uvs[i1] + b2 * mesh.uvs[i2];
+  if (!mesh.colors.empty()) s.color = b0 * mesh.colors[i0] + b1 * mesh.colors[i1] + b2 * mesh.colors[i2];
+  return s;
+}
+
 TriangleMesh make_mesh(std::vector<Point3> positions, std::vector<Normal3> normals, std::vector<Vec2> uvs,
                        std::vector<uint32_t> indices, const Transform& to_world) {
   TriangleMesh mesh;

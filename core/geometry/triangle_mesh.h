@@ -23,6 +23,18 @@ struct TriangleMesh {
   float triangle_area(size_t tri) const;
 };
 
+// A mesh's shading attributes at a point of one of its triangles.
+struct MeshShading {
+  Normal3 ng{0.f, 0.f, 1.f};  // the facet normal given, turned to the shading normal's side
+  Normal3 ns{0.f, 0.f, 1.f};  // unit interpolated normal, or ng where the mesh has none
+  Vec2 uv{0.f};               // interpolated, or (b1, b2) where the mesh has none
+  Color color{1.f};           // interpolated vertex colour, or white
+};
+
+// Interpolates at barycentrics (b1, b2) of triangle tri. ng is the facet's unit
+// normal, which the caller chooses where the triangle is degenerate.
+MeshShading interpolate_shading(const TriangleMesh& mesh, uint32_t tri, float b1, float b2, const Normal3& ng);
+
 // Builds a mesh from unpadded arrays, transformed to world space.
 TriangleMesh make_mesh(std::vector<Point3> positions, std::vector<Normal3> normals, std::vector<Vec2> uvs,
                        std::vector<uint32_t> indices, const Transform& to_world);

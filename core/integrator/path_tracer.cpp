@@ -19,6 +19,7 @@ namespace {
 // (mix choice, unused). Toon lighting has its own block (toon_shading.h).
 constexpr uint32_t kCameraPairs = 2;
 constexpr uint32_t kPairsPerBounce = 4;
+static_assert(kFirstHitMixPair == kCameraPairs + 3, "the mix choice is the fourth pair of bounce 0");
 
 struct PathState {
   Color beta{1.f};
@@ -106,7 +107,7 @@ bool scatter(const Sampler& sampler, const Bsdf& bsdf, const Frame& frame, const
 }  // namespace
 
 PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler,
-                      FirstHit* first_hit) {
+                      FirstHit* first_hit, PrimaryHit* primary) {
   PathResult result;
   PathState st;
   st.ray = camera_ray;
@@ -122,6 +123,7 @@ PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sam
     const SurfaceInteraction si = scene.geometry.interaction(st.ray, hit);
     const Vec3 wo = -glm::normalize(st.ray.d);
     st.path_length += hit.t * glm::length(st.ray.d);
+    if (depth == 0 && primary) *primary = {true, si, st.path_length};
     const uint32_t pairs = kCameraPairs + kPairsPerBounce * uint32_t(depth);
     const bool skip_lights = std::exchange(st.skip_lights, false);
 

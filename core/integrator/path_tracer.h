@@ -15,8 +15,20 @@ struct PathResult {
   uint32_t rays = 0;  // traced rays (camera, bounce and shadow), for statistics
 };
 
-// Radiance along a camera ray. `first_hit` is filled when not null.
+// The sample pair whose x picks a mix's side at the camera ray's hit. Line
+// detection reuses it, so its rays see the same side as the path.
+inline constexpr uint32_t kFirstHitMixPair = 5;
+
+// The camera ray's own intersection, for work that starts from the same hit
+// (line detection) and would otherwise trace the ray again.
+struct PrimaryHit {
+  bool hit = false;
+  SurfaceInteraction si;
+  float distance = 0.f;
+};
+
+// Radiance along a camera ray. `first_hit` and `primary` are filled when not null.
 PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler,
-                      FirstHit* first_hit);
+                      FirstHit* first_hit, PrimaryHit* primary = nullptr);
 
 }  // namespace inkray

@@ -1,6 +1,7 @@
 #include "core/render/render_session.h"
 
 #include "core/integrator/path_tracer.h"
+#include "core/npr/outlines/line_detector.h"
 
 #include <cmath>
 
@@ -23,9 +24,14 @@ Vec2 filter_offset(const RenderSettings& settings, Vec2 u) {
 
 RenderSession::RenderSession(int threads) : pool_(threads), worker_rays_(size_t(pool_.size()), 0) {}
 
-void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet aovs) {
+void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet aovs, int divisor) {
   scene_ = std::move(scene);
-  film_ = std::make_unique<Film>(scene_->settings.width, scene_->settings.height, aovs);
+  divisor_ = std::max(divisor, 1);
+  camera_override_.reset();
+  const int width = std::max((scene_->settings.width + divisor_ - 1) / divisor_, 1);
+  const int height = std::max((scene_->settings.height + divisor_ - 1) / divisor_, 1);
+  lines_ = make_line_setup(*scene_);
+  film_ = std::make_unique<Film>(width, height, aovs, lines_.active);
   stats_ = {};
 }
 
@@ -54,18 +60,32 @@ void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
   const RenderScene& scene = *scene_;
   const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
   const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-  const int x1 = std::min(x0 + kTileSize, film_->width()), y1 = std::min(y0 + kTileSize, film_->height());
-  const bool want_first_hit = film_->aovs().any();
+  int x1 = std::min(x0 + kTileSize, film_->width()), y1 = std::min(y0 + kTileSize, film_->height());
+  const auto [rx0, ry0, rx1, ry1] = region_;
+  const bool has_region = rx1 > rx0 && ry1 > ry0;
+  const int sx0 = has_region ? std::max(x0, rx0) : x0, sy0 = has_region ? std::max(y0, ry0) : y0;
+  if (has_region) x1 = std::min(x1, rx1), y1 = std::min(y1, ry1);
+  const float scale = float(divisor_);
+  const Camera& camera = camera_override_ ? *camera_override_ : scene.camera;
+  const bool want_first_hit = film_->aovs().any_first_hit();
   const float clamp = scene.settings.clamp;
   const uint32_t seed = uint32_t(scene.settings.seed);
   uint64_t rays = 0;
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
+  for (int y = sy0; y < y1; ++y) {
+    for (int x = sx0; x < x1; ++x) {
       const Sampler sampler(uint32_t(x), uint32_t(y), pass, seed);
-      const Vec2 film_pos = Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_pair(0));
-      const Ray ray = scene.camera.generate_ray(film_pos, sampler.get_pair(1));
+      const Vec2 film_pos =
+          (Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_pair(0))) * scale;
+      const Vec2 lens = sampler.get_pair(1);
+      const Ray ray = scene.camera.generate_ray(film_pos, lens);
       FirstHit first_hit;
-      PathResult r = trace_path(scene, ray, sampler, want_first_hit ? &first_hit : nullptr);
+      PrimaryHit primary;
+      PathResult r =
+          trace_path(scene, ray, sampler, want_first_hit ? &first_hit : nullptr, lines_.active ? &primary : nullptr);
+      if (lines_.active) {
+        const float u_mix = sampler.get_pair(kFirstHitMixPair).x;
+        film_->add_lines(x, y, detect_lines(scene, lines_, camera, film_pos, lens, ray, primary, u_mix, sampler, &r.rays));
+      }
       rays += r.rays;
       if (clamp > 0.f) {
         const float lum = luminance(r.radiance);

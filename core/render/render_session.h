@@ -4,12 +4,15 @@
 #pragma once
 
 #include "core/film/film.h"
+#include "core/npr/outlines/line_detector.h"
 #include "core/render/thread_pool.h"
 #include "core/scene/render_scene.h"
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <memory>
+#include <optional>
 
 namespace inkray {
 
@@ -27,8 +30,18 @@ class RenderSession {
  public:
   explicit RenderSession(int threads = 0);
 
-  // Replaces the scene and restarts accumulation at the scene's resolution.
-  void set_scene(std::shared_ptr<const RenderScene> scene, AovSet aovs = {});
+  // Replaces the scene and restarts accumulation at the scene's resolution, or
+  // at 1/divisor of it (an editor's preview: each film pixel then covers
+  // divisor x divisor image pixels, and the camera still sees the whole frame).
+  void set_scene(std::shared_ptr<const RenderScene> scene, AovSet aovs = {}, int divisor = 1);
+  // Restricts passes to film pixels in [x0,x1) x [y0,y1) (a render region);
+  // an empty rectangle means the whole film. Pixels outside keep their sums.
+  void set_region(int x0, int y0, int x1, int y1) { region_ = {x0, y0, x1, y1}; }
+  int divisor() const { return divisor_; }
+  // Generates camera rays from this camera instead of the scene's (an editor
+  // moving the view without recompiling); cleared by set_scene. Only rays are
+  // affected: anything else reading scene().camera still sees the compiled one.
+  void set_camera_override(const Camera& camera) { camera_override_ = camera; }
   // Renders one pass; false when cancelled, leaving a partial pass in the film
   // (callers cancel to restart, which clears it).
   bool render_pass();
@@ -38,6 +51,8 @@ class RenderSession {
   const RenderScene& scene() const { return *scene_; }
   const RenderStats& stats() const { return stats_; }
   int threads() const { return pool_.size(); }
+  // For work between passes (resolving the film); never while a pass runs.
+  ThreadPool& pool() { return pool_; }
 
   static constexpr int kTileSize = 16;
 
@@ -47,9 +62,13 @@ class RenderSession {
   ThreadPool pool_;
   std::shared_ptr<const RenderScene> scene_;
   std::unique_ptr<Film> film_;
+  LineSetup lines_;  // what the scene's outlines ask of every sample
   RenderStats stats_;
   std::atomic<bool> cancelled_{false};
-  std::vector<uint64_t> worker_rays_;  // one slot per worker: no shared counter on the hot path
+  std::vector<uint64_t> worker_rays_;
+  int divisor_ = 1;
+  std::optional<Camera> camera_override_;
+  std::array<int, 4> region_{0, 0, 0, 0};  // one slot per worker: no shared counter on the hot path
 };
 
 }  // namespace inkray

@@ -134,7 +134,7 @@ CompileResult compile_scene(const SceneDesc& desc) {
     }
     scene->geometry.add(std::move(*shape));
     scene->objects.push_back(
-        {obj.name, mat->second, -1, uint32_t(i), combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines)});
+        {obj.name, mat->second, -1, uint32_t(i), mat->second, combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines)});
   }
   if (!result.errors.empty()) return result;
   // Strokes grow on the compiled objects and join the same BVH.
@@ -161,8 +161,18 @@ CompileResult compile_scene(const SceneDesc& desc) {
     scene->environment_light = int(scene->lights.size());
     scene->lights.push_back(scene->environment);
   }
+  // Half by power, half uniformly: power alone all but ignores a small spot
+  // next to a sun whose power counts the whole scene's area, though the spot
+  // may light what the camera sees. The uniform half bounds any light's
+  // variance by at most twice what power selection gives.
   std::vector<float> power;
-  for (const Light& l : scene->lights) power.push_back(light_power(*scene, l));
+  double total = 0.0;
+  for (const Light& l : scene->lights) {
+    power.push_back(std::max(light_power(*scene, l), 0.f));
+    total += power.back();
+  }
+  if (total > 0.0)
+    for (float& p : power) p = float(0.5 * p / total + 0.5 / double(power.size()));
   scene->light_selection = DiscreteDistribution(power);
 
   result.scene = std::move(scene);

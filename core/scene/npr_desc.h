@@ -32,7 +32,7 @@ template <class V> void visit_params(LineStyleDesc& d, V& v) {
 }
 
 struct OutlineDesc {
-  int quality = 2;  // stencil rays: 4 * quality per distinct width
+  int quality = 1;  // stencil rays per camera sample
   float width = 2.f;
   LineWidthUnit unit = LineWidthUnit::pixels;
   float reference_height = 1080.f;  // `pixels` are pixels of an image this tall
@@ -54,7 +54,7 @@ struct OutlineDesc {
 };
 template <class V> void visit_params(OutlineDesc& d, V& v) {
   v(toggle("enabled", "Draw outlines"), d.enabled);
-  v(integer("quality", 1, 8, "Stencil rays per sample: 4 x quality"), d.quality);
+  v(integer("quality", 1, 16, "Stencil rays per camera sample: more give clean lines in fewer samples"), d.quality);
   v(number("width", 0, 1000, "Line width in `unit`"), d.width);
   v(choice("unit", kLineWidthUnitNames,
            "pixels (at reference_height), percent of image height, or world units"),

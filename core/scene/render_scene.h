@@ -27,6 +27,7 @@ struct RenderObject {
   uint32_t material = 0;
   int light = -1;        // index into RenderScene::lights when the object emits and is sampled
   uint32_t source = 0;   // index into SceneDesc::objects
+  uint32_t line_material = 0;  // material boundaries are drawn where this changes
   LineOverride lines;
 };
 

@@ -3,6 +3,7 @@
 #include "core/npr/strokes/brush.h"
 
 #include "core/math/hash.h"
+#include "core/npr/strokes/parallel_for.h"
 
 #include <stb_image.h>
 
@@ -37,13 +38,18 @@ AlphaMask procedural_mask(const StrokeEmitterDesc& e) {
   mask.height = 256;
   mask.variants = bristle ? kBrushVariants : 1;
   mask.texels.resize(size_t(mask.variants) * size_t(mask.width) * size_t(mask.height));
-  for (int layer = 0; layer < mask.variants; ++layer)
-    for (int y = 0; y < mask.height; ++y)
+  // Rows of every variant in parallel: the bake would otherwise cost more than a
+  // thousand strokes' geometry.
+  parallel_chunks(size_t(mask.variants) * size_t(mask.height), 64, [&](size_t begin, size_t end) {
+    for (size_t row = begin; row < end; ++row) {
+      const int layer = int(row / size_t(mask.height)), y = int(row % size_t(mask.height));
       for (int x = 0; x < mask.width; ++x) {
         const float u = (float(x) + 0.5f) / float(mask.width), v = (float(y) + 0.5f) / float(mask.height);
         const float a = bristle ? bristle_alpha(u, v, e.bristles, e.pressure, uint32_t(layer)) : flat_alpha(u, v, e.pressure);
         mask.at(layer, x, y) = to_texel(a);
       }
+    }
+  });
   return mask;
 }
 

@@ -126,19 +126,11 @@ SurfacePoint MeshSurface::at(uint32_t tri, float b1, float b2) const {
   SurfacePoint sp;
   sp.prim = tri;
   sp.p = b0 * m.positions[i0] + b1 * m.positions[i1] + b2 * m.positions[i2];
-  sp.ng = face_normal(m, tri);
-  sp.n = sp.ng;
-  if (!m.normals.empty()) {
-    const Vec3 ns = b0 * m.normals[i0] + b1 * m.normals[i1] + b2 * m.normals[i2];
-    const float len = glm::length(ns);
-    if (len > 0.f) {
-      sp.n = ns / len;
-      // As in hit reconstruction: the shading normal says which side is outside.
-      if (glm::dot(sp.ng, sp.n) < 0.f) sp.ng = -sp.ng;
-    }
-  }
-  sp.uv = m.uvs.empty() ? Vec2(b1, b2) : b0 * m.uvs[i0] + b1 * m.uvs[i1] + b2 * m.uvs[i2];
-  if (!m.colors.empty()) sp.color = b0 * m.colors[i0] + b1 * m.colors[i1] + b2 * m.colors[i2];
+  const MeshShading shading = interpolate_shading(m, tri, b1, b2, face_normal(m, tri));
+  sp.ng = shading.ng;
+  sp.n = shading.ns;
+  sp.uv = shading.uv;
+  sp.color = shading.color;
   return sp;
 }
 
@@ -151,19 +143,26 @@ SurfacePoint MeshSurface::sample(uint32_t seed, uint32_t index) const {
   return at(tri, s * t, 1.f - s);
 }
 
-SurfacePoint MeshSurface::project(const Point3& p) const {
+SurfacePoint MeshSurface::project(const Point3& p, float near) const {
   QueryState st;
   st.mesh = mesh_;
   st.p = p;
-  RTCPointQuery query{};
-  query.x = p.x;
-  query.y = p.y;
-  query.z = p.z;
-  query.time = 0.f;
-  query.radius = std::numeric_limits<float>::infinity();
-  RTCPointQueryContext context;
-  rtcInitPointQueryContext(&context);
-  rtcPointQuery(bvh_->scene, &query, &context, closest_point_callback, &st);
+  const auto query_within = [&](float radius) {
+    RTCPointQuery query{};
+    query.x = p.x;
+    query.y = p.y;
+    query.z = p.z;
+    query.time = 0.f;
+    query.radius = radius;
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(bvh_->scene, &query, &context, closest_point_callback, &st);
+  };
+  // Every triangle closer than the closest one's distance is visited either way,
+  // so a bounded query finds the same triangle. The margin covers the rounding of
+  // the caller's distance; should nothing lie within it, search everywhere.
+  if (near < kInfinity) query_within(1.5f * near + 1e-6f * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)));
+  if (st.tri == UINT32_MAX) query_within(kInfinity);
   if (st.tri == UINT32_MAX) throw std::logic_error("MeshSurface::project: empty mesh");
   SurfacePoint sp = at(st.tri, st.closest.b1, st.closest.b2);
   sp.p = st.closest.q;

@@ -23,8 +23,10 @@ class MeshSurface {
   SurfacePoint sample(uint32_t seed, uint32_t index) const;
   // The closest point of the mesh to p. Off a facet's interior (past an edge of
   // a flat-shaded mesh) the normal bisects the facets there: it points from the
-  // surface to p, which lets strokes walk around convex edges.
-  SurfacePoint project(const Point3& p) const;
+  // surface to p, which lets strokes walk around convex edges. near: a distance
+  // within which the caller knows a surface point lies, which narrows the search
+  // (the answer is the same).
+  SurfacePoint project(const Point3& p, float near = kInfinity) const;
 
  private:
   SurfacePoint at(uint32_t tri, float b1, float b2) const;

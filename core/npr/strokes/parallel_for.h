@@ -11,14 +11,25 @@
 
 namespace inkray {
 
-// Calls body(begin, end) over [0, count) in chunks of `grain`, on up to one
-// thread per hardware thread; runs inline when there is a single chunk.
+// Upper bound on the threads parallel_chunks uses; 0 means one per hardware
+// thread. Benchmarks set it to measure scaling, tests to check that results do
+// not depend on it.
+inline std::atomic<unsigned> stroke_build_thread_limit{0};
+
+inline unsigned stroke_build_threads() {
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned limit = stroke_build_thread_limit.load(std::memory_order_relaxed);
+  return limit == 0 ? hardware : limit;
+}
+
+// Calls body(begin, end) over [0, count) in chunks of `grain`, on up to
+// stroke_build_threads() threads; runs inline when there is a single chunk.
 template <class Body> void parallel_chunks(size_t count, size_t grain, const Body& body) {
   grain = std::max<size_t>(grain, 1);
   const size_t chunks = (count + grain - 1) / grain;
-  const size_t threads = std::min<size_t>(chunks, std::max(1u, std::thread::hardware_concurrency()));
+  const size_t threads = std::min<size_t>(chunks, stroke_build_threads());
   if (threads <= 1) {
-    if (count) body(size_t(0), count);
+    for (size_t c = 0; c < chunks; ++c) body(c * grain, std::min(count, (c + 1) * grain));
     return;
   }
   std::atomic<size_t> next{0};

@@ -74,7 +74,7 @@ SurfacePoint SphereSurface::sample(uint32_t seed, uint32_t index) const {
   return at(n);
 }
 
-SurfacePoint SphereSurface::project(const Point3& p) const {
+SurfacePoint SphereSurface::project(const Point3& p, float /*near*/) const {
   const glm::dvec3 p_object = glm::dvec3(glm::dmat4(sphere_.to_world.inv) * glm::dvec4(glm::dvec3(p), 1.0));
   const glm::dvec3 rel = p_object - glm::dvec3(sphere_.center);
   const double len = glm::length(rel);

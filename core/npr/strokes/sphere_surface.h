@@ -16,7 +16,8 @@ class SphereSurface {
   SurfacePoint sample(uint32_t seed, uint32_t index) const;
   // The surface point on the ray from the centre (in object space) through p:
   // exactly on the surface, and the closest point when the sphere is round.
-  SurfacePoint project(const Point3& p) const;
+  // near is ignored: the projection is direct.
+  SurfacePoint project(const Point3& p, float near = kInfinity) const;
   const Sphere& sphere() const { return sphere_; }
 
  private:

@@ -4,6 +4,7 @@
 #include "core/image/image_io.h"
 #include "core/math/color_space.h"
 #include "core/math/hash.h"
+#include "core/npr/strokes/parallel_for.h"
 
 namespace inkray {
 namespace {
@@ -32,16 +33,18 @@ std::vector<Color> stroke_colors(std::span<const Material> materials, uint32_t m
                                  std::span<const SurfacePoint> roots, const StrokeEmitterDesc& e) {
   const uint32_t seed = hash_combine(uint32_t(e.seed), kColorStream);
   std::vector<Color> colors(roots.size());
-  for (size_t i = 0; i < roots.size(); ++i) {
-    const auto u = [&](uint32_t dim) { return u32_to_unit_float(hash_combine(seed, uint32_t(i), dim)); };
-    const Color base = root_color(materials, material, roots[i], u(0));
-    // Display-space values above 1 would be clamped by the HSV edit: keep the
-    // colour's intensity out of it and put it back afterwards.
-    const float scale = std::max(1.f, max_component(base));
-    const Color jittered = jitter_hsv(encode(base / scale), e.hue_jitter * (2.f * u(1) - 1.f),
-                                      e.saturation_jitter * (2.f * u(2) - 1.f), e.value_jitter * (2.f * u(3) - 1.f));
-    colors[i] = decode(jittered) * scale;
-  }
+  parallel_chunks(roots.size(), 8192, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      const auto u = [&](uint32_t dim) { return u32_to_unit_float(hash_combine(seed, uint32_t(i), dim)); };
+      const Color base = root_color(materials, material, roots[i], u(0));
+      // Display-space values above 1 would be clamped by the HSV edit: keep the
+      // colour's intensity out of it and put it back afterwards.
+      const float scale = std::max(1.f, max_component(base));
+      const Color jittered = jitter_hsv(encode(base / scale), e.hue_jitter * (2.f * u(1) - 1.f),
+                                        e.saturation_jitter * (2.f * u(2) - 1.f), e.value_jitter * (2.f * u(3) - 1.f));
+      colors[i] = decode(jittered) * scale;
+    }
+  });
   return colors;
 }
 

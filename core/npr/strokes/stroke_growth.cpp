@@ -60,7 +60,8 @@ void walk(const StrokeSurface& surface, const SurfacePoint& start, const Vec3& f
     // The rotation varies along the stroke by `bend`; s is the position in [-0.5, 0.5].
     const float s = sign * (float(k) + 0.5f) * step / std::max(shape.length, 1e-30f);
     const Vec3 d = step_direction(sp, flow, sign, shape.angle + shape.bend * s, previous);
-    const SurfacePoint next = surface.project(sp.p + step * d);
+    const Point3 target = sp.p + step * d;
+    const SurfacePoint next = surface.project(target, glm::length(target - sp.p));
     previous = next.p - sp.p;
     if (previous == Vec3(0.f)) previous = d;  // a step that projected back onto itself
     sp = next;

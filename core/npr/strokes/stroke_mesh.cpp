@@ -17,15 +17,18 @@ namespace {
 
 constexpr uint32_t kGrowthStream = 0x3c6ef372u;
 
-// Angle between unit vectors, accurate at small angles (unlike acos of the dot).
-float angle_between(const Vec3& a, const Vec3& b) { return 2.f * std::atan2(glm::length(a - b), glm::length(a + b)); }
+// tan(angle / 4) for the angle between unit vectors a and b, without trigonometry:
+// with x = |a - b| and y = |a + b| (x^2 + y^2 = 4), the angle is 2 atan2(x, y)
+// and tan(atan2(x, y) / 2) = x / (2 + y). Accurate at small angles.
+float tan_quarter_angle(const Vec3& a, const Vec3& b) { return glm::length(a - b) / (2.f + glm::length(a + b)); }
 
 // How far the straight edge between two surface points can pass below the
 // surface: a circular arc through both with the angle between their normals has
 // sagitta |ab| / 2 * tan(angle / 4); the surface's factor covers sharper folds.
+// Angles are capped at 3 radians (tan(3 / 4)): a fold that sharp is an edge.
 float chord_dip(const SurfacePoint& a, const SurfacePoint& b, float factor) {
-  const float angle = std::max(angle_between(a.n, b.n), angle_between(a.ng, b.ng));
-  return factor * 0.5f * glm::length(a.p - b.p) * std::tan(0.25f * std::min(angle, 3.f));
+  const float t = std::min(std::max(tan_quarter_angle(a.n, b.n), tan_quarter_angle(a.ng, b.ng)), 0.9315965f);
+  return factor * 0.5f * glm::length(a.p - b.p) * t;
 }
 
 // Unit vector across the stroke at station j: perpendicular to the centreline
@@ -58,8 +61,9 @@ struct RibbonWriter {
     sides.resize(n_vert);
     for (size_t j = 0; j < n_st; ++j) {
       const Vec3 half = 0.5f * shape.width * across(stations, j);
-      sides[2 * j] = surface.project(stations[j].p - half);
-      sides[2 * j + 1] = surface.project(stations[j].p + half);
+      const float near = glm::length(half);
+      sides[2 * j] = surface.project(stations[j].p - half, near);
+      sides[2 * j + 1] = surface.project(stations[j].p + half, near);
     }
     // Dip of each quad between stations j and j + 1 over its five edges.
     const float factor = surface.chord_dip_factor();

@@ -31,8 +31,7 @@ class HashGrid {
   HashGrid(float cell, size_t capacity) : inv_cell_(1.f / cell) {
     size_t slots = 16;
     while (slots < 2 * capacity) slots <<= 1;
-    keys_.assign(slots, kEmpty);
-    heads_.assign(slots, -1);
+    slots_.assign(slots, Slot{});
     mask_ = slots - 1;
     points_.reserve(capacity);
     next_.reserve(capacity);
@@ -40,10 +39,10 @@ class HashGrid {
 
   void insert(const Point3& p) {
     const uint64_t k = key(cell_of(p.x), cell_of(p.y), cell_of(p.z));
-    const size_t slot = slot_of(k);
-    keys_[slot] = k;
-    next_.push_back(heads_[slot]);
-    heads_[slot] = int32_t(points_.size());
+    Slot& slot = slots_[slot_of(k)];
+    slot.key = k;
+    next_.push_back(slot.head);
+    slot.head = int32_t(points_.size());
     points_.push_back(p);
   }
 
@@ -57,7 +56,7 @@ class HashGrid {
     for (int64_t x = x0; x <= x1; ++x)
       for (int64_t y = y0; y <= y1; ++y)
         for (int64_t z = z0; z <= z1; ++z) {
-          for (int32_t i = heads_[slot_of(key(x, y, z))]; i >= 0; i = next_[size_t(i)]) {
+          for (int32_t i = slots_[slot_of(key(x, y, z))].head; i >= 0; i = next_[size_t(i)]) {
             const Vec3 d = points_[size_t(i)] - p;
             best = std::min(best, glm::dot(d, d));
           }
@@ -77,14 +76,18 @@ class HashGrid {
   // At most `capacity` cells are ever stored in twice as many slots, so a probe ends.
   size_t slot_of(uint64_t k) const {
     size_t slot = size_t(mix64(k)) & mask_;
-    while (keys_[slot] != k && keys_[slot] != kEmpty) slot = (slot + 1) & mask_;
+    while (slots_[slot].key != k && slots_[slot].key != kEmpty) slot = (slot + 1) & mask_;
     return slot;
   }
 
   float inv_cell_;
   size_t mask_ = 0;
-  std::vector<uint64_t> keys_;
-  std::vector<int32_t> heads_;
+  // Key and list head side by side: a probe touches one cache line.
+  struct Slot {
+    uint64_t key = kEmpty;
+    int32_t head = -1;
+  };
+  std::vector<Slot> slots_;
   std::vector<Point3> points_;
   std::vector<int32_t> next_;
 };

@@ -55,8 +55,8 @@ SurfacePoint StrokeSurface::sample(uint32_t seed, uint32_t index) const {
   return std::visit([&](const auto& s) { return s.sample(seed, index); }, surface_);
 }
 
-SurfacePoint StrokeSurface::project(const Point3& p) const {
-  return std::visit([&](const auto& s) { return s.project(p); }, surface_);
+SurfacePoint StrokeSurface::project(const Point3& p, float near) const {
+  return std::visit([&](const auto& s) { return s.project(p, near); }, surface_);
 }
 
 }  // namespace inkray

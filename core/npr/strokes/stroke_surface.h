@@ -20,7 +20,9 @@ class StrokeSurface {
 
   double area() const;
   SurfacePoint sample(uint32_t seed, uint32_t index) const;
-  SurfacePoint project(const Point3& p) const;
+  // near: a distance within which a surface point is known to lie (a hint for
+  // meshes; the answer does not depend on it).
+  SurfacePoint project(const Point3& p, float near = kInfinity) const;
 
   float size() const { return size_; }  // bounding box diagonal
   // Largest coordinate magnitude: float rounding of positions scales with it.

@@ -1,0 +1,77 @@
+#include "core/npr/outlines/perceived_surface.h"
+
+#include "core/materials/fresnel.h"
+
+#include <optional>
+
+namespace inkray {
+namespace {
+
+// The direction a line-finding ray continues in past a specular surface, or
+// nullopt where the surface is what is seen.
+std::optional<Vec3> continue_through(const Material& material, const SurfaceInteraction& si, const Vec3& wo) {
+  if (const auto* c = std::get_if<ConductorMaterial>(&material)) {
+    if (c->alpha > 0.f) return std::nullopt;
+    return reflect(wo, si.ns);
+  }
+  if (const auto* d = std::get_if<DielectricMaterial>(&material)) {
+    if (d->bsdf.alpha > 0.f) return std::nullopt;
+    // Glass shows mostly what is behind it: follow the refraction, and the
+    // reflection only where there is none.
+    if (const auto r = refract(wo, si.ns, d->bsdf.eta)) return r->wt;
+    return reflect(wo, si.ns);
+  }
+  if (std::holds_alternative<TransparentMaterial>(material)) return -wo;
+  return std::nullopt;
+}
+
+}  // namespace
+
+PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float u_mix, uint32_t* rays,
+                                        const PrimaryHit* first) {
+  PerceivedSurface out;
+  const bool follow = scene.outlines.in_reflections;
+  for (int chain = 0; chain <= kMaxPerceivedChain; ++chain) {
+    SurfaceInteraction si;
+    float length = 0.f;
+    if (chain == 0 && first) {
+      if (!first->hit) return out;
+      si = first->si;
+      length = first->distance;
+    } else {
+      Hit hit;
+      ++*rays;
+      if (!scene.geometry.intersect(ray, kInfinity, &hit)) return out;
+      si = scene.geometry.interaction(ray, hit);
+      length = hit.t * glm::length(ray.d);
+    }
+    const RenderObject& object = scene.objects[si.object];
+    uint32_t material = object.material;
+    if (std::holds_alternative<MixMaterial>(scene.materials[material]))
+      material = resolve_mix(scene.materials, material, si, u_mix);
+    if (material == kNoMaterial) return out;
+    const Vec3 wo = -glm::normalize(ray.d);
+    out.distance += length;
+
+    std::optional<Vec3> next;
+    if (follow && !object.lines.stop_lines && chain < kMaxPerceivedChain)
+      next = continue_through(scene.materials[material], si, wo);
+    if (!next) {
+      out.hit = true;
+      out.object = si.object;
+      out.identity = object.source;
+      out.material = object.line_material;
+      out.p = si.p;
+      const bool flip = glm::dot(wo, si.ng) < 0.f;
+      out.ng = flip ? -si.ng : si.ng;
+      out.ns = flip ? -si.ns : si.ns;
+      return out;
+    }
+    if (out.via == kDirect) out.via = object.source;
+    const Normal3 side = glm::dot(*next, si.ng) > 0.f ? si.ng : -si.ng;
+    ray = spawn_ray(si.p, si.p_error, side, *next);
+  }
+  return out;
+}
+
+}  // namespace inkray

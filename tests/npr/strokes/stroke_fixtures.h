@@ -1,0 +1,48 @@
+// Surfaces and emitters the stroke tests share.
+#pragma once
+
+#include "core/npr/strokes/stroke_surface.h"
+#include "core/scene/npr_desc.h"
+
+#include <gtest/gtest.h>
+
+namespace inkray::testing {
+
+// A round sphere away from the origin, so float rounding of positions matters.
+inline Sphere test_sphere() {
+  Sphere s;
+  s.center = Point3(0.f);
+  s.radius = 1.5f;
+  s.to_world = Transform::translate({3.f, -2.f, 5.f});
+  return s;
+}
+
+// A mesh surface refers to its mesh, so the box lives as long as the tests.
+inline const Shape& test_box() {
+  static const Shape box = make_box(Point3(-1.f, -0.5f, -0.75f), Point3(1.f, 0.5f, 0.75f), Transform{});
+  return box;
+}
+
+// The shape must outlive the surface when it is a mesh.
+inline StrokeSurface surface_of(const Shape& shape) {
+  std::string error;
+  auto surface = StrokeSurface::from_shape(shape, &error);
+  EXPECT_TRUE(surface) << error;
+  return std::move(*surface);
+}
+
+inline StrokeEmitterDesc test_emitter(int count, int seed = 1) {
+  StrokeEmitterDesc e;
+  e.name = "paint";
+  e.object = "thing";
+  e.count = count;
+  e.seed = seed;
+  e.width_min = 0.04f;
+  e.width_max = 0.08f;
+  e.length_min = 0.15f;
+  e.length_max = 0.3f;
+  e.rotation_jitter = 30.f;
+  return e;
+}
+
+}  // namespace inkray::testing
