@@ -34,14 +34,14 @@ struct PathState {
   float path_length = 0.f;
 };
 
-void record_first_hit(const RenderScene& scene, const SurfaceInteraction& si, const Material& resolved,
-                      FirstHit* out) {
+void record_first_hit(const RenderScene& scene, const Camera& camera, const SurfaceInteraction& si,
+                      const Material& resolved, FirstHit* out) {
   const RenderObject& obj = scene.objects[si.object];
   out->object = int(obj.source);
   out->material = int(obj.material);            // a mix keeps its own id, so material lines do not flicker
   out->albedo = material_albedo(resolved, si);  // a mix's side per sample: averages to the blend
   out->normal = si.ns;
-  out->depth = glm::dot(si.p - scene.camera.origin(), scene.camera.forward());
+  out->depth = glm::dot(si.p - camera.origin(), camera.forward());
 }
 
 // MIS weight for emission found by a BSDF-sampled ray.
@@ -106,8 +106,8 @@ bool scatter(const Sampler& sampler, const Bsdf& bsdf, const Frame& frame, const
 
 }  // namespace
 
-PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler,
-                      FirstHit* first_hit, PrimaryHit* primary) {
+PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray& camera_ray,
+                      const Sampler& sampler, FirstHit* first_hit, PrimaryHit* primary) {
   PathResult result;
   PathState st;
   st.ray = camera_ray;
@@ -133,7 +133,7 @@ PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sam
       if (material_index == kNoMaterial) break;
     }
     const Material& material = scene.materials[material_index];
-    if (depth == 0 && first_hit) record_first_hit(scene, si, material, first_hit);
+    if (depth == 0 && first_hit) record_first_hit(scene, camera, si, material, first_hit);
 
     if (std::holds_alternative<EmissiveMaterial>(material)) {
       const int light = scene.objects[si.object].light;

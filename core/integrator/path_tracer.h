@@ -27,8 +27,10 @@ struct PrimaryHit {
   float distance = 0.f;
 };
 
-// Radiance along a camera ray. `first_hit` and `primary` are filled when not null.
-PathResult trace_path(const RenderScene& scene, const Ray& camera_ray, const Sampler& sampler,
-                      FirstHit* first_hit, PrimaryHit* primary = nullptr);
+// Radiance along a ray from `camera` (the scene's, or one an editor moved
+// without recompiling; the depth AOV is measured along its axis).
+// `first_hit` and `primary` are filled when not null.
+PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray& camera_ray,
+                      const Sampler& sampler, FirstHit* first_hit, PrimaryHit* primary = nullptr);
 
 }  // namespace inkray

@@ -77,11 +77,11 @@ void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
       const Vec2 film_pos =
           (Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_pair(0))) * scale;
       const Vec2 lens = sampler.get_pair(1);
-      const Ray ray = scene.camera.generate_ray(film_pos, lens);
+      const Ray ray = camera.generate_ray(film_pos, lens);
       FirstHit first_hit;
       PrimaryHit primary;
       PathResult r =
-          trace_path(scene, ray, sampler, want_first_hit ? &first_hit : nullptr, lines_.active ? &primary : nullptr);
+          trace_path(scene, camera, ray, sampler, want_first_hit ? &first_hit : nullptr, lines_.active ? &primary : nullptr);
       if (lines_.active) {
         const float u_mix = sampler.get_pair(kFirstHitMixPair).x;
         film_->add_lines(x, y, detect_lines(scene, lines_, camera, film_pos, lens, ray, primary, u_mix, sampler, &r.rays));

@@ -1,0 +1,219 @@
+// inkray: the editor. GLFW window, OpenGL 3.3 core, Dear ImGui; everything
+// else is EditorApp (ui/). Headless runs for tests and measurements:
+//   inkray --screenshot OUT.png --frames N [SCENE.json]
+//   inkray --measure-edits N [SCENE.json]   (edit latency and frame times)
+#include "core/image/image_io.h"
+#include "ui/camera_controller.h"
+#include "ui/editor_app.h"
+
+#include <GLFW/glfw3.h>
+#include <GL/gl.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+struct Options {
+  std::string scene;
+  std::string screenshot;
+  int frames = 0;  // 0: run until closed
+  int measure_edits = 0;
+  int threads = 0;
+  int width = 1600, height = 900;
+};
+
+void usage() {
+  std::puts(
+      "usage: inkray [SCENE.json] [options]\n"
+      "  --screenshot FILE    after --frames frames (and the first full-resolution image),\n"
+      "                       write the window to FILE (PNG) and exit\n"
+      "  --frames N           frames to run before the screenshot or exit\n"
+      "  --measure-edits N    make N camera edits and print edit-to-pixels latency and frame times\n"
+      "  --threads N          viewport render threads (default: all cores but one)\n"
+      "  --size WxH           window size (default 1600x900)");
+}
+
+bool parse(int argc, char** argv, Options* o) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
+    const char* v = nullptr;
+    if (a == "-h" || a == "--help") {
+      usage();
+      std::exit(0);
+    } else if (a == "--screenshot" && (v = value())) {
+      o->screenshot = v;
+    } else if (a == "--frames" && (v = value())) {
+      o->frames = std::atoi(v);
+    } else if (a == "--measure-edits" && (v = value())) {
+      o->measure_edits = std::atoi(v);
+    } else if (a == "--threads" && (v = value())) {
+      o->threads = std::atoi(v);
+    } else if (a == "--size" && (v = value())) {
+      if (std::sscanf(v, "%dx%d", &o->width, &o->height) != 2) return false;
+    } else if (!a.empty() && a[0] != '-' && o->scene.empty()) {
+      o->scene = a;
+    } else {
+      std::fprintf(stderr, "inkray: unknown or incomplete argument \"%s\"\n", a.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
+bool write_screenshot(const std::string& file, int width, int height) {
+  std::vector<uint8_t> rgba(size_t(width) * size_t(height) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  inkray::RgbImage image{width, height, std::vector<inkray::Color>(size_t(width) * size_t(height))};
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const uint8_t* p = &rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4];  // GL rows go up
+      image.at(x, y) = inkray::Color(inkray::srgb_to_linear(p[0] / 255.f), inkray::srgb_to_linear(p[1] / 255.f),
+                                     inkray::srgb_to_linear(p[2] / 255.f));
+    }
+  }
+  std::string error;
+  if (!inkray::write_image(file, image, &error)) {
+    std::fprintf(stderr, "inkray: %s\n", error.c_str());
+    return false;
+  }
+  return true;
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))];
+}
+
+void print_stats(const char* what, const std::vector<double>& v) {
+  std::printf("%s: n=%zu p50=%.2f ms p95=%.2f ms max=%.2f ms\n", what, v.size(), percentile(v, 0.5),
+              percentile(v, 0.95), v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  if (!parse(argc, argv, &opt)) {
+    usage();
+    return 2;
+  }
+  glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "glfw error %d: %s\n", code, text); });
+  if (!glfwInit()) {
+    std::fprintf(stderr, "inkray: cannot open a window (no display?); use inkray-render for headless renders\n");
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(opt.width, opt.height, "inkray", nullptr, nullptr);
+  if (!window) {
+    std::fprintf(stderr, "inkray: cannot create an OpenGL 3.3 window\n");
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // the layout is fixed; nothing to remember
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 0.f;
+  style.FrameRounding = 3.f;
+  style.WindowBorderSize = 1.f;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  int exit_code = 0;
+  {
+    inkray::EditorOptions editor_options;
+    editor_options.scene = opt.scene;
+    editor_options.threads = opt.threads;
+    // Scripted runs must not stop at a recovery question.
+    editor_options.offer_recovery = opt.screenshot.empty() && opt.measure_edits == 0;
+    inkray::EditorApp app(editor_options);
+
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    std::vector<double> frame_ms;
+    int frame = 0, edits_made = 0, frames_since_edit = 0;
+    bool measuring = false;
+    for (;; ++frame) {
+      const auto frame_start = clock::now();
+      glfwPollEvents();
+      if (glfwWindowShouldClose(window)) {
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        app.request_quit();
+      }
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window, &w, &h);
+      app.frame(float(w), float(h));
+      ImGui::Render();
+      glViewport(0, 0, w, h);
+      glClearColor(0.1f, 0.1f, 0.11f, 1.f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      const double work_ms = std::chrono::duration<double, std::milli>(clock::now() - frame_start).count();
+      if (measuring) frame_ms.push_back(work_ms);
+      glfwSetWindowTitle(window, app.window_title().c_str());
+
+      const double seconds = std::chrono::duration<double>(clock::now() - start).count();
+      if (!opt.screenshot.empty() && frame >= opt.frames &&
+          (app.viewport().shown_full_resolution() || seconds > 120.0)) {
+        const auto& v = app.viewport_frame();
+        std::printf("viewport image: %d %d %d %d\n", int(v.image_x), int(v.image_y), int(v.image_w),
+                    int(v.image_h));
+        std::printf("viewport spp: %u\n", app.viewport().shown_spp());
+        exit_code = write_screenshot(opt.screenshot, w, h) ? 0 : 1;
+        break;
+      }
+      if (opt.measure_edits > 0 && app.viewport().shown_full_resolution()) {
+        measuring = true;
+        // An orbit step through the document, as a drag would make, every 15 frames.
+        if (++frames_since_edit >= 15) {
+          frames_since_edit = 0;
+          if (edits_made == opt.measure_edits) {
+            print_stats("edit-to-first-pixels", app.edit_latencies_ms());
+            print_stats("  of which renderer (compile+preview)", app.render_latencies_ms());
+            print_stats("ui frame (work)", frame_ms);
+            break;
+          }
+          inkray::SceneDesc scene = app.state().document.scene();
+          scene.camera = inkray::orbit(scene.camera, 0.02f, 0.f);
+          app.state().edit(std::move(scene), "Orbit");
+          ++edits_made;
+        }
+      }
+      if (opt.screenshot.empty() && opt.measure_edits == 0 && opt.frames > 0 && frame >= opt.frames) break;
+      glfwSwapBuffers(window);
+      if (app.should_quit()) break;
+      // Without a vsync (Xvfb) the loop would spin; hold it near 60 Hz.
+      const auto frame_end = frame_start + std::chrono::microseconds(16600);
+      if (clock::now() < frame_end) std::this_thread::sleep_until(frame_end);
+    }
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return exit_code;
+}

@@ -1,0 +1,31 @@
+// Turns a linear image into the 8-bit RGBA a viewport shows: exposure and a
+// view transform, then an outline around a highlighted object. Done off the UI
+// thread so display changes never need a re-render and never stall a frame.
+#pragma once
+
+#include "core/image/rgb_image.h"
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace inkray {
+
+enum class ViewTransform { standard, filmic, raw };
+inline constexpr std::array<std::string_view, 3> kViewTransformNames = {"standard", "filmic", "raw"};
+
+struct DisplayEncoding {
+  float exposure = 0.f;  // stops
+  ViewTransform transform = ViewTransform::standard;
+};
+
+// 4 bytes per pixel, row 0 at the top, alpha 255.
+std::vector<uint8_t> encode_display(const RgbImage& image, const DisplayEncoding& encoding);
+
+// Paints the inner border of the pixels whose id equals `object` (ids as stored
+// in the object_id AOV) in `rgb`, so a selection stays visible over any image.
+void paint_highlight(std::vector<uint8_t>& rgba, const RgbImage& object_ids, int object,
+                     std::array<uint8_t, 3> rgb);
+
+}  // namespace inkray

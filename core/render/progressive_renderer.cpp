@@ -1,0 +1,254 @@
+#include "core/render/progressive_renderer.h"
+
+#include "core/film/aov_display.h"
+#include "core/film/resolve.h"
+#include "core/scene/compile.h"
+#include "core/scene/json_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace inkray {
+namespace {
+
+// The first preview is this much coarser than the image (per axis): 1/64 of
+// the pixels, so it is ready within a UI frame or two even on one thread;
+// each following stage halves it.
+constexpr int kFirstPreviewDivisor = 8;
+
+AovSet aovs_for(const ViewportView& view) {
+  AovSet aovs;
+  aovs.add(Aov::object_id);  // the selection highlight reads it
+  if (view.display >= 0 && view.display < int(kAovNames.size())) aovs.add(Aov(view.display));
+  return aovs;
+}
+
+// The document without its camera: equal texts mean only the camera moved.
+std::string without_camera(const SceneDesc& scene) {
+  SceneDesc copy = scene;
+  copy.camera = CameraDesc{};
+  return scene_to_string(copy);
+}
+
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+ProgressiveRenderer::ProgressiveRenderer(int threads) : session_(threads) {
+  worker_ = std::thread([this] { run(); });
+}
+
+ProgressiveRenderer::~ProgressiveRenderer() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  session_.cancel();
+  wake_.notify_all();
+  worker_.join();
+}
+
+uint64_t ProgressiveRenderer::submit(const SceneDesc& scene) {
+  uint64_t revision;
+  {
+    std::lock_guard lock(mutex_);
+    pending_ = scene;
+    revision = pending_revision_ = ++revisions_;
+    pending_time_ = std::chrono::steady_clock::now();
+  }
+  session_.cancel();
+  wake_.notify_all();
+  return revision;
+}
+
+void ProgressiveRenderer::set_view(const ViewportView& view) {
+  {
+    std::lock_guard lock(mutex_);
+    view_ = view;
+    reencode_ = true;
+  }
+  wake_.notify_all();
+}
+
+void ProgressiveRenderer::set_limits(const ViewportLimits& limits) {
+  {
+    std::lock_guard lock(mutex_);
+    limits_ = limits;
+    reencode_ = true;  // a raised limit lets a finished render continue
+  }
+  wake_.notify_all();
+}
+
+void ProgressiveRenderer::set_region(const RegionRect& region) {
+  {
+    std::lock_guard lock(mutex_);
+    region_ = region;
+    restart_ = true;
+  }
+  session_.cancel();
+  wake_.notify_all();
+}
+
+void ProgressiveRenderer::set_paused(bool paused) {
+  {
+    std::lock_guard lock(mutex_);
+    paused_ = paused;
+  }
+  wake_.notify_all();
+}
+
+bool ProgressiveRenderer::paused() const {
+  std::lock_guard lock(mutex_);
+  return paused_;
+}
+
+uint64_t ProgressiveRenderer::generation() const {
+  std::lock_guard lock(mutex_);
+  return generation_;
+}
+
+std::shared_ptr<const ViewportSnapshot> ProgressiveRenderer::latest() const {
+  std::lock_guard lock(mutex_);
+  return latest_;
+}
+
+std::shared_ptr<const RenderScene> ProgressiveRenderer::scene() const {
+  std::lock_guard lock(mutex_);
+  return scene_;
+}
+
+std::vector<std::string> ProgressiveRenderer::take_messages() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(messages_, {});
+}
+
+void ProgressiveRenderer::run() {
+  std::shared_ptr<const RenderScene> scene;  // what the session renders
+  for (;;) {
+    std::optional<SceneDesc> desc;
+    bool restart = false, reencode = false, paused = false;
+    ViewportView view;
+    ViewportLimits limits;
+    RegionRect region;
+    uint64_t revision = 0;
+    std::chrono::steady_clock::time_point revision_time;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || pending_ || restart_ || reencode_ || (active_ && !paused_); });
+      if (stop_) return;
+      desc = std::move(pending_);
+      pending_.reset();
+      revision = pending_revision_;
+      revision_time = pending_time_;
+      restart = std::exchange(restart_, false);
+      reencode = std::exchange(reencode_, false);
+      view = view_;
+      limits = limits_;
+      region = region_;
+      paused = paused_;
+    }
+    if (desc && scene && without_camera(*desc) == compiled_text_) {
+      // Only the camera moved: keep the compiled scene (a stroke scene takes
+      // hundreds of milliseconds to compile) and move the rays.
+      camera_ = Camera(desc->camera, scene->settings.width, scene->settings.height);
+      std::lock_guard lock(mutex_);
+      revision_ = revision;
+      revision_time_ = revision_time;
+      restart = true;
+      desc.reset();
+    }
+    if (desc) {
+      compiled_text_ = without_camera(*desc);
+      camera_.reset();
+      CompileResult compiled = compile_scene(*desc);
+      std::lock_guard lock(mutex_);
+      if (!compiled.scene) {
+        messages_.insert(messages_.end(), compiled.errors.begin(), compiled.errors.end());
+        continue;  // the last good scene stays on screen
+      }
+      scene = scene_ = compiled.scene;
+      revision_ = revision;
+      revision_time_ = revision_time;
+      restart = true;
+    }
+    if (!scene) continue;
+    if (reencode && (aovs_for(view).bits & ~aovs_.bits) != 0) restart = true;
+    if (restart) {
+      aovs_ = aovs_for(view);
+      curve_.clear();
+      first_publish_ = true;
+      const int divisor = region.empty() ? kFirstPreviewDivisor : 1;
+      session_.set_scene(scene, aovs_, divisor);
+      if (camera_) session_.set_camera_override(*camera_);
+      const int w = session_.film().width(), h = session_.film().height();
+      if (region.empty()) {
+        session_.set_region(0, 0, 0, 0);
+      } else {
+        session_.set_region(int(std::floor(region.x0 * w)), int(std::floor(region.y0 * h)),
+                            int(std::ceil(region.x1 * w)), int(std::ceil(region.y1 * h)));
+      }
+      active_ = true;
+    } else if (reencode) {
+      active_ = true;  // limits may have been raised; limits_reached() decides below
+      if (session_.stats().passes > 0) publish_snapshot(scene, view, limits, false);
+    }
+    if (!active_ || paused) continue;
+    const int divisor = session_.divisor();
+    if (divisor == 1 && session_.stats().passes > 0 && limits_reached(limits)) {
+      active_ = false;
+      publish_snapshot(scene, view, limits, true);
+      continue;
+    }
+    if (!session_.render_pass()) continue;  // cancelled: a newer request is waiting
+    const RenderStats& stats = session_.stats();
+    if (divisor == 1) curve_.push_back({stats.elapsed_seconds, stats.relative_error});
+    const bool done = divisor == 1 && limits_reached(limits);
+    publish_snapshot(scene, view, limits, done);
+    if (divisor > 1) {
+      session_.set_scene(scene, aovs_, divisor / 2);
+      if (camera_) session_.set_camera_override(*camera_);
+    } else if (done) {
+      active_ = false;
+    }
+  }
+}
+
+bool ProgressiveRenderer::limits_reached(const ViewportLimits& limits) const {
+  const RenderStats& s = session_.stats();
+  if (limits.spp > 0 && int(s.spp) >= limits.spp) return true;
+  if (limits.time_seconds > 0.0 && s.elapsed_seconds >= limits.time_seconds) return true;
+  return limits.noise_target > 0.0 && s.passes >= 4 && s.relative_error > 0.0 &&
+         s.relative_error <= limits.noise_target;
+}
+
+void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderScene>& scene,
+                                           const ViewportView& view, const ViewportLimits&, bool finished) {
+  const Film& film = session_.film();
+  auto snap = std::make_shared<ViewportSnapshot>();
+  if (view.display >= 0 && film.aovs().has(Aov(view.display))) {
+    const Aov aov = Aov(view.display);
+    snap->rgba = encode_display(aov_for_display(aov, film.resolve_aov(aov)), DisplayEncoding{});
+  } else {
+    snap->rgba = encode_display(resolve_final(film, *scene, &session_.pool()), view.encoding);
+  }
+  if (view.highlight_object >= 0 && film.aovs().has(Aov::object_id)) {
+    paint_highlight(snap->rgba, film.resolve_aov(Aov::object_id), view.highlight_object, view.highlight_rgb);
+  }
+  snap->width = film.width();
+  snap->height = film.height();
+  snap->divisor = session_.divisor();
+  snap->stats = session_.stats();
+  snap->error_curve = curve_;
+  snap->finished = finished;
+  std::lock_guard lock(mutex_);
+  snap->revision = revision_;
+  snap->submit_to_publish_ms = ms_since(revision_time_);
+  first_publish_ = false;
+  latest_ = std::move(snap);
+  ++generation_;
+}
+
+}  // namespace inkray

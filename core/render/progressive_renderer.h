@@ -1,0 +1,118 @@
+// ProgressiveRenderer: the editor's background renderer. A worker thread owns
+// a RenderSession; submit() hands it a new document, which it compiles,
+// previews at 1/4 and 1/2 resolution, then refines at full resolution until a
+// sample, time or noise limit. After every pass it publishes an immutable
+// snapshot; the UI polls generation() and never waits for a pass.
+#pragma once
+
+#include "core/film/film.h"
+#include "core/render/display_encode.h"
+#include "core/render/render_session.h"
+#include "core/scene/desc.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace inkray {
+
+struct ViewportView {
+  int display = -1;  // -1 the final image, else an Aov (index into kAovNames)
+  DisplayEncoding encoding;
+  int highlight_object = -1;  // SceneDesc object index outlined in the viewport
+  std::array<uint8_t, 3> highlight_rgb{255, 160, 40};
+};
+
+struct ViewportLimits {
+  int spp = 64;
+  double time_seconds = 0.0;  // 0: none
+  double noise_target = 0.0;  // stop when the estimated relative error is below; 0: none
+};
+
+// A render region in fractions of the image, [x0,x1) x [y0,y1); empty is the whole image.
+struct RegionRect {
+  float x0 = 0.f, y0 = 0.f, x1 = 0.f, y1 = 0.f;
+  bool empty() const { return !(x1 > x0 && y1 > y0); }
+};
+
+struct ErrorSample {
+  double seconds = 0.0;
+  double relative_error = 0.0;
+};
+
+struct ViewportSnapshot {
+  int width = 0, height = 0;  // of rgba, which is the film: image resolution / divisor
+  int divisor = 1;
+  std::vector<uint8_t> rgba;
+  RenderStats stats;
+  std::vector<ErrorSample> error_curve;  // full-resolution passes of this revision
+  bool finished = false;                  // a limit was reached; the worker idles
+  uint64_t revision = 0;                  // the submit() this image shows
+  double submit_to_publish_ms = 0.0;      // latency from that submit() to this snapshot
+};
+
+class ProgressiveRenderer {
+ public:
+  explicit ProgressiveRenderer(int threads = 0);
+  ~ProgressiveRenderer();
+  ProgressiveRenderer(const ProgressiveRenderer&) = delete;
+  ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
+
+  // A new document: cancels the pass in flight and restarts from a preview.
+  // Returns the revision that snapshots of this document will carry.
+  uint64_t submit(const SceneDesc& scene);
+  void set_view(const ViewportView& view);      // re-encodes; re-renders only for a missing AOV
+  void set_limits(const ViewportLimits& limits);
+  void set_region(const RegionRect& region);    // restarts at full resolution inside the region
+  void set_paused(bool paused);
+  bool paused() const;
+
+  uint64_t generation() const;  // increments with every published snapshot
+  std::shared_ptr<const ViewportSnapshot> latest() const;
+  // The newest compiled scene (for picking on the UI thread; it is immutable).
+  std::shared_ptr<const RenderScene> scene() const;
+  // Compile errors since the last call, for the log.
+  std::vector<std::string> take_messages();
+  int threads() const { return session_.threads(); }
+
+ private:
+  void run();
+  void publish_snapshot(const std::shared_ptr<const RenderScene>& scene, const ViewportView& view,
+                        const ViewportLimits& limits, bool finished);
+  bool limits_reached(const ViewportLimits& limits) const;
+
+  RenderSession session_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::thread worker_;
+
+  // Written by the UI under mutex_, read by the worker at its next step.
+  std::optional<SceneDesc> pending_;
+  uint64_t pending_revision_ = 0;
+  std::chrono::steady_clock::time_point pending_time_;
+  ViewportView view_;
+  ViewportLimits limits_;
+  RegionRect region_;
+  bool paused_ = false, stop_ = false, reencode_ = false, restart_ = false;
+  uint64_t revisions_ = 0;
+  std::vector<std::string> messages_;
+  std::shared_ptr<const ViewportSnapshot> latest_;
+  std::shared_ptr<const RenderScene> scene_;
+  uint64_t generation_ = 0;
+
+  // Worker-only state.
+  std::string compiled_text_;  // the compiled document as JSON with its camera left out
+  std::optional<Camera> camera_;  // set when only the camera changed since the compile
+  uint64_t revision_ = 0;
+  std::chrono::steady_clock::time_point revision_time_;
+  bool first_publish_ = true, active_ = false;
+  AovSet aovs_;
+  std::vector<ErrorSample> curve_;
+};
+
+}  // namespace inkray

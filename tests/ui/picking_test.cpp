@@ -1,0 +1,55 @@
+// Picking: a ray through the compiled scene finds the object under a pixel.
+#include "core/scene/compile.h"
+#include "ui/picking.h"
+#include "ui/scene_edits.h"
+
+#include <gtest/gtest.h>
+
+namespace inkray {
+namespace {
+
+SceneDesc two_spheres() {
+  SceneDesc s;
+  s.render.width = 200;
+  s.render.height = 100;
+  s.camera.look_from = Point3(0.f, 0.f, 10.f);
+  s.camera.look_at = Point3(0.f);
+  s.materials.push_back({"m", DiffuseDesc{}, {}});
+  ObjectDesc left;
+  left.name = "left";
+  left.shape = SphereDesc{Point3(-2.f, 0.f, 0.f), 1.f};
+  left.material = "m";
+  ObjectDesc right = left;
+  right.name = "right";
+  right.shape = SphereDesc{Point3(2.f, 0.f, 0.f), 1.f};
+  s.objects = {left, right};
+  return s;
+}
+
+TEST(Picking, FindsTheObjectUnderThePixel) {
+  const SceneDesc desc = two_spheres();
+  const CompileResult compiled = compile_scene(desc);
+  ASSERT_TRUE(compiled.scene) << compiled.errors.front();
+  const RenderScene& scene = *compiled.scene;
+  Vec2 left_px, right_px;
+  ASSERT_TRUE(scene.camera.project(Point3(-2.f, 0.f, 0.f), &left_px));
+  ASSERT_TRUE(scene.camera.project(Point3(2.f, 0.f, 0.f), &right_px));
+  const PickResult a = pick(scene, left_px);
+  EXPECT_EQ(a.object, 0);
+  EXPECT_NEAR(a.depth, 9.f, 0.05f);  // the sphere's front, one radius before its centre
+  EXPECT_EQ(pick(scene, right_px).object, 1);
+  EXPECT_EQ(pick(scene, Vec2(100.f, 5.f)).object, -1);  // background above the spheres
+}
+
+TEST(Picking, HiddenObjectsAreNotPicked) {
+  SceneDesc desc = two_spheres();
+  desc.objects[0].visible = false;
+  const CompileResult compiled = compile_scene(desc);
+  ASSERT_TRUE(compiled.scene);
+  Vec2 right_px;
+  ASSERT_TRUE(compiled.scene->camera.project(Point3(2.f, 0.f, 0.f), &right_px));
+  EXPECT_EQ(pick(*compiled.scene, right_px).object, 1);  // document index, not compiled index
+}
+
+}  // namespace
+}  // namespace inkray

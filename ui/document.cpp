@@ -1,0 +1,95 @@
+#include "ui/document.h"
+
+#include "core/scene/json_io.h"
+
+#include <utility>
+
+namespace inkray {
+
+Document::Document() { reset(default_scene()); }
+
+SceneDesc Document::default_scene() {
+  SceneDesc s;
+  s.camera.look_from = Point3(0.f, 1.5f, 6.f);
+  s.camera.look_at = Point3(0.f, 0.7f, 0.f);
+  s.render.width = 960;
+  s.render.height = 540;
+  s.environment = GradientEnvironmentDesc{};
+  s.materials.push_back({"ground", DiffuseDesc{Color(0.6f)}, {}});
+  s.materials.push_back({"red", DiffuseDesc{Color(0.7f, 0.15f, 0.1f)}, {}});
+  ObjectDesc ground;
+  ground.name = "ground";
+  ground.shape = QuadDesc{Point3(-5.f, 0.f, 5.f), Vec3(10.f, 0.f, 0.f), Vec3(0.f, 0.f, -10.f)};
+  ground.material = "ground";
+  s.objects.push_back(ground);
+  ObjectDesc sphere;
+  sphere.name = "sphere";
+  sphere.shape = SphereDesc{Point3(0.f, 1.f, 0.f), 1.f};
+  sphere.material = "red";
+  s.objects.push_back(sphere);
+  LightDesc sun;
+  sun.name = "sun";
+  sun.data = DirectionalLightDesc{Vec3(-0.4f, -1.f, -0.3f), Color(1.f), 3.f};
+  s.lights.push_back(sun);
+  return s;
+}
+
+std::string Document::display_name() const {
+  std::string name = file_.empty() ? std::string("untitled") : file_.filename().string();
+  if (dirty()) name += '*';
+  return name;
+}
+
+void Document::edit(SceneDesc after, std::string label, std::string merge_key) {
+  history_.apply(scene_, std::move(after), std::move(label), std::move(merge_key));
+  ++revision_;
+}
+
+bool Document::undo() {
+  if (!history_.undo(scene_)) return false;
+  ++revision_;
+  return true;
+}
+
+bool Document::redo() {
+  if (!history_.redo(scene_)) return false;
+  ++revision_;
+  return true;
+}
+
+bool Document::open(const std::filesystem::path& file, std::vector<std::string>* errors) {
+  SceneLoadResult loaded = load_scene(file);
+  if (!loaded) {
+    if (errors) *errors = std::move(loaded.errors);
+    return false;
+  }
+  reset(std::move(*loaded.scene), std::filesystem::absolute(file));
+  return true;
+}
+
+void Document::reset(SceneDesc scene, std::filesystem::path file, bool dirty) {
+  scene_ = std::move(scene);
+  file_ = std::move(file);
+  history_.clear();
+  saved_state_ = dirty ? ~uint64_t(0) : history_.state_id();
+  ++revision_;
+}
+
+bool Document::save(std::string* error) {
+  if (file_.empty()) {
+    if (error) *error = "the document has no file yet: use Save As";
+    return false;
+  }
+  return save_as(file_, error);
+}
+
+bool Document::save_as(const std::filesystem::path& file, std::string* error) {
+  const std::filesystem::path absolute = std::filesystem::absolute(file);
+  if (!save_scene(scene_, absolute, error)) return false;
+  file_ = absolute;
+  if (scene_.base_dir.empty()) scene_.base_dir = absolute.parent_path();
+  saved_state_ = history_.state_id();
+  return true;
+}
+
+}  // namespace inkray

@@ -1,0 +1,48 @@
+// The open scene document: its SceneDesc, file, undo history and unsaved
+// state. Every change goes through edit(), so every change can be undone.
+#pragma once
+
+#include "ui/command_stack.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace inkray {
+
+class Document {
+ public:
+  Document();
+
+  // What File > New opens: a camera, a light, a ground and a sphere.
+  static SceneDesc default_scene();
+
+  const SceneDesc& scene() const { return scene_; }
+  const std::filesystem::path& file() const { return file_; }  // empty until saved
+  bool dirty() const { return history_.state_id() != saved_state_; }
+  // Changes whenever the scene does (edits, undo, redo, open), for re-rendering.
+  uint64_t revision() const { return revision_; }
+  // "cornell.json*" style: file name and an unsaved mark.
+  std::string display_name() const;
+
+  void edit(SceneDesc after, std::string label, std::string merge_key = {});
+  void end_merge() { history_.end_merge(); }
+  bool undo();
+  bool redo();
+  const CommandStack& history() const { return history_; }
+
+  // Replaces the document; on failure the current one stays and *errors says why.
+  bool open(const std::filesystem::path& file, std::vector<std::string>* errors);
+  void reset(SceneDesc scene, std::filesystem::path file = {}, bool dirty = false);
+  bool save(std::string* error);
+  bool save_as(const std::filesystem::path& file, std::string* error);
+
+ private:
+  SceneDesc scene_;
+  std::filesystem::path file_;
+  CommandStack history_;
+  uint64_t saved_state_ = 0;
+  uint64_t revision_ = 1;
+};
+
+}  // namespace inkray

@@ -1,0 +1,97 @@
+// The editor's shell: menu bar, shortcuts, fixed panel layout, dialogs
+// (file, unsaved changes, load errors, crash recovery), and the link between
+// the document and the background renderer. Windowing lives in app/; this
+// draws one ImGui frame at a time.
+#pragma once
+
+#include "ui/autosave.h"
+#include "ui/editor_state.h"
+#include "ui/file_dialog.h"
+#include "ui/recent_files.h"
+#include "ui/viewport_panel.h"
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+
+namespace inkray {
+
+struct EditorOptions {
+  std::filesystem::path scene;  // opened at start when set
+  int threads = 0;              // viewport render threads; 0: all but one core for the UI
+  bool offer_recovery = true;
+  std::chrono::seconds autosave_interval{120};
+};
+
+class EditorApp {
+ public:
+  explicit EditorApp(EditorOptions options);
+  ~EditorApp();
+
+  // Draws the whole UI for a window of the given size; call between ImGui::NewFrame and ImGui::Render.
+  void frame(float window_width, float window_height);
+  std::string window_title() const;
+  // The window's close button: quits at once, or asks first when there are unsaved changes.
+  void request_quit();
+  bool should_quit() const { return quit_; }
+
+  EditorState& state() { return state_; }
+  const ViewportPanel& viewport() const { return *viewport_; }
+  const ViewportFrame& viewport_frame() const { return viewport_frame_; }
+  ProgressiveRenderer& renderer() { return renderer_; }
+  // Submit-to-first-pixels-on-screen latencies, one per edit that reached the screen.
+  const std::vector<double>& edit_latencies_ms() const { return latencies_ms_; }
+  // The renderer's part of it: submit to the snapshot's publication (compile + preview pass + resolve).
+  const std::vector<double>& render_latencies_ms() const { return render_latencies_ms_; }
+
+ private:
+  enum class Pending { none, new_document, open_dialog, open_file, quit };
+
+  void menu_bar();
+  void shortcuts();
+  void layout(float width, float height);
+  void dialogs();
+  void sync_renderer();
+  void poll_background();
+
+  void guarded(Pending action, std::filesystem::path file = {});  // asks about unsaved changes first
+  void run(Pending action, const std::filesystem::path& file);
+  void open_file(const std::filesystem::path& file);
+  void save(bool choose_file);
+  void frame_selected();
+  void start_export();
+
+  EditorOptions options_;
+  EditorState state_;
+  ProgressiveRenderer renderer_;
+  std::unique_ptr<ViewportPanel> viewport_;
+  ViewportFrame viewport_frame_;
+  FileDialog file_dialog_;
+  enum class DialogPurpose { open, save_as, add_mesh } dialog_purpose_ = DialogPurpose::open;
+  RecentFiles recent_;
+  Autosave autosave_;
+
+  Pending pending_ = Pending::none;
+  std::filesystem::path pending_file_;
+  bool ask_unsaved_ = false;
+  std::vector<std::string> load_errors_;
+  bool show_load_errors_ = false;
+  std::optional<Recovery> recovery_;
+  bool quit_ = false;
+
+  // What the renderer has been told, to send only changes.
+  uint64_t submitted_doc_revision_ = 0;
+  ViewportView sent_view_;
+  ViewportLimits sent_limits_;
+  RegionRect sent_region_;
+  bool sent_paused_ = false;
+  bool first_sync_ = true;
+  uint64_t logged_finish_revision_ = 0;
+
+  std::map<uint64_t, std::chrono::steady_clock::time_point> submit_times_;
+  std::vector<double> latencies_ms_, render_latencies_ms_;
+};
+
+}  // namespace inkray

@@ -1,0 +1,95 @@
+// The editor's widgets, generated from the parameter lists (DESIGN principle 8):
+// a visitor over visit_params that draws one ImGui widget per Param, with its
+// range and doc as a tooltip, and records which parameter changed.
+#pragma once
+
+#include "core/scene/desc.h"
+
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace inkray {
+
+struct ParamWidgets {
+  bool changed = false;
+  std::string changed_param;  // name of the last changed parameter: the undo merge key
+
+  void operator()(const Param& p, float& v);
+  void operator()(const Param& p, int& v);
+  void operator()(const Param& p, bool& v);
+  void operator()(const Param& p, Vec3& v);  // point, direction, vector or color by p.kind
+  void operator()(const Param& p, std::string& v);
+  void operator()(const Param& p, ColorInput& v);
+  void operator()(const Param& p, std::vector<Color>& v);
+  template <class E>
+  requires std::is_enum_v<E>
+  void operator()(const Param& p, E& v) {
+    int index = int(v);
+    if (choice_widget(p, &index)) v = E(index), note(p);
+  }
+  template <ParamGroup T>
+  void operator()(const Param& p, T& group) {
+    if (begin_group(p)) {
+      visit_params(group, *this);
+      end_group();
+    }
+  }
+
+ private:
+  bool choice_widget(const Param& p, int* index);
+  bool begin_group(const Param& p);
+  void end_group();
+  void note(const Param& p) {
+    changed = true;
+    changed_param = p.name;
+  }
+};
+
+template <class Desc>
+bool edit_params(Desc& desc, std::string* changed_param = nullptr) {
+  ParamWidgets widgets;
+  visit_params(desc, widgets);
+  if (changed_param && widgets.changed) *changed_param = widgets.changed_param;
+  return widgets.changed;
+}
+
+// A variant alternative's name in the type combo: its JSON tag, or "constant" for a plain colour.
+template <class T>
+constexpr std::string_view alternative_name() {
+  if constexpr (requires { T::type_name; }) {
+    return T::type_name;
+  } else {
+    return "constant";
+  }
+}
+
+bool variant_type_combo_impl(const char* label, const std::vector<std::string_view>& names, int* index);
+
+// A combo over a tagged variant's alternatives (by their "type" names); switching
+// type starts the new alternative from its defaults.
+template <class Variant>
+bool edit_variant_type(const char* label, Variant& value) {
+  std::vector<std::string_view> names;
+  [&]<size_t... I>(std::index_sequence<I...>) {
+    (names.push_back(alternative_name<std::variant_alternative_t<I, Variant>>()), ...);
+  }(std::make_index_sequence<std::variant_size_v<Variant>>());
+  int index = int(value.index());
+  if (!variant_type_combo_impl(label, names, &index)) return false;
+  [&]<size_t... I>(std::index_sequence<I...>) {
+    ((index == int(I) ? (value = std::variant_alternative_t<I, Variant>{}, 0) : 0), ...);
+  }(std::make_index_sequence<std::variant_size_v<Variant>>());
+  return true;
+}
+
+// Type combo plus the alternative's parameters.
+template <class Variant>
+bool edit_tagged(const char* label, Variant& value, std::string* changed_param) {
+  bool changed = edit_variant_type(label, value);
+  if (changed && changed_param) *changed_param = "type";
+  std::visit([&](auto& alternative) { changed |= edit_params(alternative, changed_param); }, value);
+  return changed;
+}
+
+}  // namespace inkray

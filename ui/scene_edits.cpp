@@ -1,0 +1,220 @@
+#include "ui/scene_edits.h"
+
+#include "core/scene/compile.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace inkray {
+namespace {
+
+constexpr std::string_view kDefaultMaterial = "default";
+
+template <class T>
+bool name_taken(const std::vector<T>& items, std::string_view name) {
+  return std::any_of(items.begin(), items.end(), [&](const T& item) { return item.name == name; });
+}
+
+bool name_taken(const SceneDesc& scene, ItemKind kind, std::string_view name) {
+  switch (kind) {
+    case ItemKind::object: return name_taken(scene.objects, name);
+    case ItemKind::light: return name_taken(scene.lights, name);
+    case ItemKind::material: return name_taken(scene.materials, name);
+    case ItemKind::emitter: return name_taken(scene.strokes, name);
+    default: return false;
+  }
+}
+
+// Objects need a material; new ones share one neutral grey.
+std::string ensure_default_material(SceneDesc& scene) {
+  if (!name_taken(scene.materials, kDefaultMaterial)) {
+    scene.materials.push_back({std::string(kDefaultMaterial), DiffuseDesc{Color(0.7f)}, {}});
+  }
+  return std::string(kDefaultMaterial);
+}
+
+Selection add_object(SceneDesc& scene, std::string_view base, ShapeVariant shape) {
+  ObjectDesc object;
+  object.name = unique_name(scene, ItemKind::object, base);
+  object.shape = std::move(shape);
+  object.material = ensure_default_material(scene);
+  scene.objects.push_back(std::move(object));
+  return {ItemKind::object, int(scene.objects.size()) - 1};
+}
+
+template <class T>
+Selection duplicate_in(SceneDesc& scene, std::vector<T>& items, ItemKind kind, int index) {
+  T copy = items[size_t(index)];
+  copy.name = unique_name(scene, kind, copy.name);
+  items.insert(items.begin() + index + 1, std::move(copy));
+  return {kind, index + 1};
+}
+
+}  // namespace
+
+std::string unique_name(const SceneDesc& scene, ItemKind kind, std::string_view base) {
+  // A copy of "sphere.2" is "sphere.3", not "sphere.2.1".
+  std::string stem(base);
+  const size_t dot = stem.rfind('.');
+  if (dot != std::string::npos && dot + 1 < stem.size() &&
+      std::all_of(stem.begin() + long(dot) + 1, stem.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    stem.resize(dot);
+  }
+  if (stem.empty()) stem = "item";
+  if (!name_taken(scene, kind, stem)) return stem;
+  for (int i = 1;; ++i) {
+    std::string candidate = stem + "." + std::to_string(i);
+    if (!name_taken(scene, kind, candidate)) return candidate;
+  }
+}
+
+Selection add_shape(SceneDesc& scene, NewShape shape) {
+  switch (shape) {
+    case NewShape::sphere: return add_object(scene, "sphere", SphereDesc{Point3(0.f, 1.f, 0.f), 1.f});
+    case NewShape::quad:
+      return add_object(scene, "quad", QuadDesc{Point3(-1.f, 0.f, 1.f), Vec3(2.f, 0.f, 0.f), Vec3(0.f, 0.f, -2.f)});
+    case NewShape::box: return add_object(scene, "box", BoxDesc{Point3(-0.5f, 0.f, -0.5f), Point3(0.5f, 1.f, 0.5f)});
+  }
+  return {};
+}
+
+Selection add_mesh(SceneDesc& scene, const std::string& obj_path) {
+  std::filesystem::path p(obj_path);
+  std::string stored = obj_path;
+  if (!scene.base_dir.empty() && p.is_absolute()) {
+    // Relative to the scene file, so the document can move with its assets.
+    std::error_code ec;
+    const std::filesystem::path rel = std::filesystem::relative(p, scene.base_dir, ec);
+    if (!ec && !rel.empty()) stored = rel.generic_string();
+  }
+  const std::string stem = p.stem().string();
+  return add_object(scene, stem.empty() ? "mesh" : stem, MeshDesc{stored});
+}
+
+Selection add_point_light(SceneDesc& scene) {
+  LightDesc light;
+  light.name = unique_name(scene, ItemKind::light, "light");
+  light.data = PointLightDesc{Point3(0.f, 3.f, 2.f), Color(1.f), 10.f};
+  scene.lights.push_back(std::move(light));
+  return {ItemKind::light, int(scene.lights.size()) - 1};
+}
+
+Selection add_stroke_emitter(SceneDesc& scene, const std::string& object) {
+  StrokeEmitterDesc emitter;
+  emitter.name = unique_name(scene, ItemKind::emitter, "strokes");
+  emitter.object = object;
+  scene.strokes.push_back(std::move(emitter));
+  return {ItemKind::emitter, int(scene.strokes.size()) - 1};
+}
+
+Selection add_material(SceneDesc& scene) {
+  scene.materials.push_back({unique_name(scene, ItemKind::material, "material"), DiffuseDesc{}, {}});
+  return {ItemKind::material, int(scene.materials.size()) - 1};
+}
+
+Selection duplicate_item(SceneDesc& scene, const Selection& item) {
+  if (!is_valid(scene, item)) return {};
+  switch (item.kind) {
+    case ItemKind::object: return duplicate_in(scene, scene.objects, item.kind, item.index);
+    case ItemKind::light: return duplicate_in(scene, scene.lights, item.kind, item.index);
+    case ItemKind::material: return duplicate_in(scene, scene.materials, item.kind, item.index);
+    case ItemKind::emitter: return duplicate_in(scene, scene.strokes, item.kind, item.index);
+    default: return {};
+  }
+}
+
+bool delete_item(SceneDesc& scene, const Selection& item) {
+  if (!is_valid(scene, item)) return false;
+  switch (item.kind) {
+    case ItemKind::object: {
+      const std::string name = scene.objects[size_t(item.index)].name;
+      scene.objects.erase(scene.objects.begin() + item.index);
+      std::erase_if(scene.strokes, [&](const StrokeEmitterDesc& e) { return e.object == name; });
+      return true;
+    }
+    case ItemKind::light: scene.lights.erase(scene.lights.begin() + item.index); return true;
+    case ItemKind::emitter: scene.strokes.erase(scene.strokes.begin() + item.index); return true;
+    case ItemKind::material: {
+      const std::string& name = scene.materials[size_t(item.index)].name;
+      const bool used = std::any_of(scene.objects.begin(), scene.objects.end(),
+                                    [&](const ObjectDesc& o) { return o.material == name; });
+      if (used) return false;  // objects would point at nothing
+      scene.materials.erase(scene.materials.begin() + item.index);
+      return true;
+    }
+    default: return false;
+  }
+}
+
+bool rename_item(SceneDesc& scene, const Selection& item, const std::string& name) {
+  if (!is_valid(scene, item) || name.empty() || name_taken(scene, item.kind, name)) return false;
+  switch (item.kind) {
+    case ItemKind::object: {
+      std::string& old = scene.objects[size_t(item.index)].name;
+      for (StrokeEmitterDesc& e : scene.strokes) {
+        if (e.object == old) e.object = name;
+      }
+      old = name;
+      return true;
+    }
+    case ItemKind::material: {
+      std::string& old = scene.materials[size_t(item.index)].name;
+      for (ObjectDesc& o : scene.objects) {
+        if (o.material == old) o.material = name;
+      }
+      for (MaterialDesc& m : scene.materials) {
+        if (auto* mix = std::get_if<MixDesc>(&m.data)) {
+          if (mix->a == old) mix->a = name;
+          if (mix->b == old) mix->b = name;
+        }
+      }
+      old = name;
+      return true;
+    }
+    case ItemKind::light: scene.lights[size_t(item.index)].name = name; return true;
+    case ItemKind::emitter: scene.strokes[size_t(item.index)].name = name; return true;
+    default: return false;
+  }
+}
+
+bool set_visible(SceneDesc& scene, const Selection& item, bool visible) {
+  if (item.kind != ItemKind::object || !is_valid(scene, item)) return false;
+  scene.objects[size_t(item.index)].visible = visible;
+  return true;
+}
+
+void object_bounds(const ObjectDesc& object, Point3* center, float* radius) {
+  std::vector<Point3> corners;
+  std::visit(
+      [&](const auto& shape) {
+        using T = std::decay_t<decltype(shape)>;
+        Point3 lo(-1.f), hi(1.f);  // meshes: their extent is in the OBJ file
+        if constexpr (std::is_same_v<T, SphereDesc>) {
+          lo = shape.center - Vec3(shape.radius);
+          hi = shape.center + Vec3(shape.radius);
+        } else if constexpr (std::is_same_v<T, QuadDesc>) {
+          const Point3 pts[4] = {shape.corner, shape.corner + shape.edge_u, shape.corner + shape.edge_v,
+                                 shape.corner + shape.edge_u + shape.edge_v};
+          lo = hi = pts[0];
+          for (const Point3& p : pts) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        } else if constexpr (std::is_same_v<T, BoxDesc>) {
+          lo = shape.min;
+          hi = shape.max;
+        }
+        for (int i = 0; i < 8; ++i) {
+          corners.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+        }
+      },
+      object.shape);
+  const Transform t = transform_from_desc(object.transform);
+  Point3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const Point3& c : corners) {
+    const Point3 p = t.point(c);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  *center = 0.5f * (lo + hi);
+  *radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+}
+
+}  // namespace inkray
