@@ -29,6 +29,7 @@ struct Options {
   int measure_edits = 0;
   int threads = 0;
   int width = 1600, height = 900;
+  std::string select;  // object to select at start, so screenshots show the highlight
 };
 
 void usage() {
@@ -39,7 +40,8 @@ void usage() {
       "  --frames N           frames to run before the screenshot or exit\n"
       "  --measure-edits N    make N camera edits and print edit-to-pixels latency and frame times\n"
       "  --threads N          viewport render threads (default: all cores but one)\n"
-      "  --size WxH           window size (default 1600x900)");
+      "  --size WxH           window size (default 1600x900)\n"
+      "  --select NAME        select the object NAME at start (for screenshots and tests)");
 }
 
 bool parse(int argc, char** argv, Options* o) {
@@ -58,6 +60,8 @@ bool parse(int argc, char** argv, Options* o) {
       o->measure_edits = std::atoi(v);
     } else if (a == "--threads" && (v = value())) {
       o->threads = std::atoi(v);
+    } else if (a == "--select" && (v = value())) {
+      o->select = v;
     } else if (a == "--size" && (v = value())) {
       if (std::sscanf(v, "%dx%d", &o->width, &o->height) != 2) return false;
     } else if (!a.empty() && a[0] != '-' && o->scene.empty()) {
@@ -147,13 +151,26 @@ int main(int argc, char** argv) {
     // Scripted runs must not stop at a recovery question.
     editor_options.offer_recovery = opt.screenshot.empty() && opt.measure_edits == 0;
     inkray::EditorApp app(editor_options);
+    if (!opt.select.empty()) {
+      inkray::EditorState& state = app.state();
+      const auto& objects = state.document.scene().objects;
+      const auto found = std::find_if(objects.begin(), objects.end(),
+                                      [&](const inkray::ObjectDesc& o) { return o.name == opt.select; });
+      if (found == objects.end()) {
+        std::fprintf(stderr, "inkray: --select: no object named \"%s\"\n", opt.select.c_str());
+        exit_code = 1;
+      } else {
+        state.selection = {inkray::ItemKind::object, int(found - objects.begin())};
+      }
+    }
 
     using clock = std::chrono::steady_clock;
     const auto start = clock::now();
     std::vector<double> frame_ms;
     int frame = 0, edits_made = 0, frames_since_edit = 0;
     bool measuring = false;
-    for (;; ++frame) {
+    // A failed --select leaves exit_code set and skips the loop.
+    for (; exit_code == 0; ++frame) {
       const auto frame_start = clock::now();
       glfwPollEvents();
       if (glfwWindowShouldClose(window)) {

@@ -16,6 +16,7 @@ namespace {
 constexpr const char* kNavMergeKey = "viewport:camera";
 
 std::string display_name(int display) {
+  if (display == kDisplayNoise) return "noise estimate";
   return display < 0 ? std::string("final") : std::string(kAovNames[size_t(display)]);
 }
 
@@ -47,7 +48,11 @@ void ViewportPanel::upload(const ViewportSnapshot& s) {
 void ViewportPanel::toolbar(EditorState& state, ProgressiveRenderer& renderer) {
   ImGui::SetNextItemWidth(120.f);
   if (ImGui::BeginCombo("##display", display_name(state.view.display).c_str())) {
-    for (int d = -1; d < int(kAovNames.size()); ++d) {
+    // The final image, the noise estimate, then the AOVs.
+    for (int d : {kDisplayFinal, kDisplayNoise}) {
+      if (ImGui::Selectable(display_name(d).c_str(), d == state.view.display)) state.view.display = d;
+    }
+    for (int d = 0; d < int(kAovNames.size()); ++d) {
       if (ImGui::Selectable(display_name(d).c_str(), d == state.view.display)) state.view.display = d;
     }
     ImGui::EndCombo();

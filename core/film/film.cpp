@@ -161,4 +161,17 @@ double Film::estimated_relative_error() const {
   return std::sqrt(diff2 / double(pixels)) / (lum / double(pixels));
 }
 
+RgbImage Film::resolve_noise() const {
+  RgbImage img{width_, height_, std::vector<Color>(size_t(width_) * size_t(height_), Color(0.f))};
+  for (size_t i = 0; i < img.pixels.size(); ++i) {
+    const uint32_t na = count_[0][i], nb = count_[1][i];
+    if (!na || !nb) continue;
+    const double a = luminance(sum_[0][i]) / na, b = luminance(sum_[1][i]) / nb;
+    const double mean = 0.5 * (a + b);
+    if (mean <= 0.0) continue;
+    img.pixels[i] = Color(float(std::abs(a - b) * 0.5 / mean));
+  }
+  return img;
+}
+
 }  // namespace inkray

@@ -79,6 +79,10 @@ class Film {
   // Estimated relative RMS error of the mean image from the half-buffer
   // difference: sqrt(mean((a-b)^2)/4) / mean(luminance), over luminance.
   double estimated_relative_error() const;
+  // Per-pixel relative standard error of the mean, |a - b| / 2 / mean over the
+  // luminance of the two half-buffer means a and b, as grey; 0 where a half is
+  // empty or the pixel is black (nothing to be relative to).
+  RgbImage resolve_noise() const;
 
  private:
   size_t index(int x, int y) const { return size_t(y) * size_t(width_) + size_t(x); }

@@ -23,9 +23,11 @@ struct DisplayEncoding {
 // 4 bytes per pixel, row 0 at the top, alpha 255.
 std::vector<uint8_t> encode_display(const RgbImage& image, const DisplayEncoding& encoding);
 
-// Paints the inner border of the pixels whose id equals `object` (ids as stored
-// in the object_id AOV) in `rgb`, so a selection stays visible over any image.
+// Paints the inner border, `thickness` pixels wide, of the pixels whose id
+// equals `object` (ids as stored in the object_id AOV) in `rgb`, so a selection
+// stays visible over any image. A full-resolution film is usually shown a little
+// scaled, where a 1-pixel line blends into its neighbours: use 2 there.
 void paint_highlight(std::vector<uint8_t>& rgba, const RgbImage& object_ids, int object,
-                     std::array<uint8_t, 3> rgb);
+                     std::array<uint8_t, 3> rgb, int thickness = 1);
 
 }  // namespace inkray

@@ -231,11 +231,17 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
   if (view.display >= 0 && film.aovs().has(Aov(view.display))) {
     const Aov aov = Aov(view.display);
     snap->rgba = encode_display(aov_for_display(aov, film.resolve_aov(aov)), DisplayEncoding{});
+  } else if (view.display == kDisplayNoise) {
+    // Raw, so grey is proportional to the error (white = 100 % at 0 EV); the
+    // exposure slider still applies to make small errors visible.
+    snap->rgba = encode_display(film.resolve_noise(), DisplayEncoding{view.encoding.exposure, ViewTransform::raw});
   } else {
     snap->rgba = encode_display(resolve_final(film, *scene, &session_.pool()), view.encoding);
   }
   if (view.highlight_object >= 0 && film.aovs().has(Aov::object_id)) {
-    paint_highlight(snap->rgba, film.resolve_aov(Aov::object_id), view.highlight_object, view.highlight_rgb);
+    // Previews are magnified, so their 1-pixel line is already thick on screen.
+    paint_highlight(snap->rgba, film.resolve_aov(Aov::object_id), view.highlight_object, view.highlight_rgb,
+                    session_.divisor() == 1 ? 2 : 1);
   }
   snap->width = film.width();
   snap->height = film.height();

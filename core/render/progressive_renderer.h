@@ -21,8 +21,12 @@
 
 namespace inkray {
 
+// ViewportView::display values below the AOV indices.
+inline constexpr int kDisplayFinal = -1;
+inline constexpr int kDisplayNoise = -2;  // Film::resolve_noise(), per-pixel relative error
+
 struct ViewportView {
-  int display = -1;  // -1 the final image, else an Aov (index into kAovNames)
+  int display = kDisplayFinal;  // kDisplayFinal, kDisplayNoise, else an Aov (index into kAovNames)
   DisplayEncoding encoding;
   int highlight_object = -1;  // SceneDesc object index outlined in the viewport
   std::array<uint8_t, 3> highlight_rgb{255, 160, 40};

@@ -33,6 +33,23 @@ TEST(Film, NoiseEstimateIsZeroForConstantAndPositiveForNoise) {
   EXPECT_NEAR(noisy.estimated_relative_error(), 1.0, 1e-6);
 }
 
+TEST(Film, NoiseImageIsPerPixelHalfDifferenceOverMean) {
+  Film film(3, 1, {});
+  for (uint32_t pass = 0; pass < 4; ++pass) {
+    film.add_sample(0, 0, pass, Color(0.5f));                     // constant: no noise
+    film.add_sample(1, 0, pass, Color(pass % 2 ? 3.f : 1.f));     // halves 1 and 3
+  }
+  film.add_sample(2, 0, 0, Color(2.f));  // only the even half has samples
+  const RgbImage noise = film.resolve_noise();
+  ASSERT_EQ(noise.pixels.size(), 3u);
+  EXPECT_EQ(noise.pixels[0], Color(0.f));
+  // |1 - 3| / 2 / mean 2 = 0.5, the same in every channel.
+  EXPECT_NEAR(noise.pixels[1].r, 0.5f, 1e-6f);
+  EXPECT_EQ(noise.pixels[1].r, noise.pixels[1].g);
+  EXPECT_EQ(noise.pixels[1].r, noise.pixels[1].b);
+  EXPECT_EQ(noise.pixels[2], Color(0.f));
+}
+
 TEST(Film, AovsAreOnlyKeptWhenAsked) {
   AovSet set;
   set.add(Aov::depth);

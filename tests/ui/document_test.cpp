@@ -1,5 +1,6 @@
 // Document files: save and reopen, a failed open keeps the document, and an
 // interrupted save (the process killed mid-write) leaves the old file intact.
+#include "core/scene/asset_paths.h"
 #include "core/scene/json_io.h"
 #include "ui/autosave.h"
 #include "ui/document.h"
@@ -45,6 +46,55 @@ TEST_F(DocumentFiles, SaveThenOpenRoundTrips) {
   EXPECT_EQ(other.scene().objects.size(), doc.scene().objects.size());
   EXPECT_FALSE(other.dirty());
   EXPECT_FALSE(other.history().can_undo());
+}
+
+TEST_F(DocumentFiles, SaveAsToAnotherFolderKeepsAssetsFound) {
+  // A scene in a/ with a mesh at a/meshes/x.obj and a texture at a/tex.png.
+  std::filesystem::create_directories(dir_ / "a" / "meshes");
+  std::filesystem::copy_file(std::filesystem::path(INKRAY_SOURCE_DIR) / "tests/data/meshes/cube.obj",
+                             dir_ / "a" / "meshes" / "x.obj");
+  std::ofstream(dir_ / "a" / "tex.png") << "not read by the loader";
+  SceneDesc s = Document::default_scene();
+  ObjectDesc mesh;
+  mesh.name = "x";
+  mesh.shape = MeshDesc{"meshes/x.obj"};
+  mesh.material = s.materials.front().name;
+  s.objects.push_back(mesh);
+  s.materials.push_back({"textured", DiffuseDesc{ImageTextureDesc{"tex.png"}}, {}});
+  s.base_dir = dir_ / "a";
+  std::string error;
+  ASSERT_TRUE(save_scene(s, dir_ / "a" / "scene.json", &error)) << error;
+
+  Document doc;
+  std::vector<std::string> errors;
+  ASSERT_TRUE(doc.open(dir_ / "a" / "scene.json", &errors)) << (errors.empty() ? "" : errors.front());
+  std::filesystem::create_directories(dir_ / "b" / "deeper");
+  ASSERT_TRUE(doc.save_as(dir_ / "b" / "deeper" / "scene.json", &error)) << error;
+  // The open document still resolves against a/.
+  EXPECT_EQ(std::get<MeshDesc>(doc.scene().objects.back().shape).path, "meshes/x.obj");
+
+  const SceneLoadResult moved = load_scene(dir_ / "b" / "deeper" / "scene.json");
+  ASSERT_TRUE(moved.scene) << (moved.errors.empty() ? "" : moved.errors.front());
+  EXPECT_EQ(std::get<MeshDesc>(moved.scene->objects.back().shape).path, "../../a/meshes/x.obj");
+  const auto& diffuse = std::get<DiffuseDesc>(moved.scene->materials.back().data);
+  EXPECT_EQ(std::get<ImageTextureDesc>(diffuse.albedo).path, "../../a/tex.png");
+
+  // Saving back into a/ gives the original paths.
+  ASSERT_TRUE(doc.save_as(dir_ / "a" / "again.json", &error)) << error;
+  const SceneLoadResult back = load_scene(dir_ / "a" / "again.json");
+  ASSERT_TRUE(back.scene) << (back.errors.empty() ? "" : back.errors.front());
+  EXPECT_EQ(std::get<MeshDesc>(back.scene->objects.back().shape).path, "meshes/x.obj");
+}
+
+TEST(AssetPaths, AbsoluteAndEmptyPathsAreKept) {
+  SceneDesc s;
+  ObjectDesc a, b;
+  a.shape = MeshDesc{"/abs/x.obj"};
+  b.shape = MeshDesc{""};
+  s.objects = {a, b};
+  rebase_asset_paths(s, "/one/two", "/three");
+  EXPECT_EQ(std::get<MeshDesc>(s.objects[0].shape).path, "/abs/x.obj");
+  EXPECT_EQ(std::get<MeshDesc>(s.objects[1].shape).path, "");
 }
 
 TEST_F(DocumentFiles, FailedOpenKeepsTheDocument) {
