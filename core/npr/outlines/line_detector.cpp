@@ -76,6 +76,11 @@ LineSetup make_line_setup(const RenderScene& scene) {
     s.max_width = std::max(s.max_width, style.width);
   }
   s.rays = std::clamp(o.quality, 1, kMaxStencilRays);
+  // Narrower line types share the stencil: a point of the wide disc that falls
+  // inside a narrower one is a uniform point of that disc, so counting it with
+  // weight (R / r)^2 keeps every type's coverage unbiased.
+  for (int t = 0; t < kLineTypeCount; ++t)
+    if (s.width[size_t(t)] > 0.f) s.ray_weight[size_t(t)] = sqr(s.max_width / s.width[size_t(t)]) / float(s.rays);
   const float height = scene.camera.image_height();
   s.width_px = o.unit == LineWidthUnit::pixels    ? o.width * height / o.reference_height
                : o.unit == LineWidthUnit::percent ? o.width * height / 100.f
@@ -97,12 +102,7 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
   const float width = sample_width_px(scene, setup, camera, centre, centre_ray.d);
   const float pixel_angle = 1.f / camera.world_to_pixels(1.f, 1.f);
   const float radius = std::max(width * setup.max_width * kStencilRadiusPerWidth, 1e-3f);
-  // Narrower line types share the stencil: a point of the wide disc that falls
-  // inside a narrower one is a uniform point of that disc, so counting it with
-  // weight (R / r)^2 keeps every type's coverage unbiased.
-  std::array<float, kLineTypeCount> weight{};
-  for (int t = 0; t < kLineTypeCount; ++t)
-    if (setup.width[size_t(t)] > 0.f) weight[size_t(t)] = sqr(setup.max_width / setup.width[size_t(t)]) / float(setup.rays);
+  const std::array<float, kLineTypeCount>& weight = setup.ray_weight;
 
   for (int k = 0; k < setup.rays; ++k) {
     const Vec2 u = sampler.get_pair(kOutlinePairBlock + uint32_t(k));

@@ -18,6 +18,7 @@ struct LineSetup {
   uint32_t enabled = 0;                     // bit per LineType
   std::array<float, kLineTypeCount> width{};  // per-type width multipliers
   float max_width = 0.f;                      // the largest of them: the stencil's radius
+  std::array<float, kLineTypeCount> ray_weight{};  // coverage one stencil ray adds to each type
   int rays = 1;                               // stencil rays per sample
   float width_px = 0.f;        // base width in pixels of this image (pixels and percent units)
   bool world_width = false;    // width in world units: depends on the centre's distance
