@@ -35,6 +35,15 @@ void print_table(const std::vector<PassRecord>& history) {
   }
 }
 
+int write_scene_file(const SceneDesc& desc, const std::filesystem::path& file) {
+  std::string error;
+  if (!save_scene_as(desc, file, &error)) {
+    std::fprintf(stderr, "error: %s\n", error.c_str());
+    return 1;
+  }
+  return 0;
+}
+
 int run(const RenderCliOptions& opt) {
   SceneLoadResult loaded = load_scene(opt.scene);
   if (!loaded) {
@@ -42,6 +51,7 @@ int run(const RenderCliOptions& opt) {
     return 1;
   }
   SceneDesc desc = std::move(*loaded.scene);
+  if (!opt.write_scene.empty()) return write_scene_file(desc, opt.write_scene);
   if (opt.width) desc.render.width = *opt.width;
   if (opt.height) desc.render.height = *opt.height;
   if (opt.seed) desc.render.seed = *opt.seed;

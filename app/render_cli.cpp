@@ -12,6 +12,8 @@ namespace inkray {
 const char* const kRenderCliHelp = R"(inkray-render: render an inkray scene without a window.
 
 usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
+       inkray-render SCENE.json --write-scene OUT.json
+
 
   -o, --output FILE     image to write; .png is 8-bit sRGB, .pfm and .exr are linear float
   --spp N               samples per pixel (default: the scene's render.spp)
@@ -24,6 +26,9 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
                         depth, object_id, material_id) or an outline opacity: outline (all line
                         types) or outline_depth, outline_crease, outline_intersection,
                         outline_material, outline_object, outline_silhouette (one type each)
+  --write-scene FILE    read and check the scene, write it as the editor saves it (every
+                        parameter, asset paths relative to FILE's folder) and exit without
+                        rendering; upgrades and normalises scene files
   -q, --quiet           no progress bar
   -h, --help            this text
 
@@ -83,6 +88,10 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       const auto v = value_of(i, arg);
       if (!v) return std::nullopt;
       o.output = std::string(*v);
+    } else if (arg == "--write-scene") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      o.write_scene = std::string(*v);
     } else if (arg == "--spp") {
       if (!int_option(i, arg, 1, 1 << 20, &o.spp)) return std::nullopt;
     } else if (arg == "--threads") {
@@ -126,6 +135,13 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
   if (o.scene.empty()) {
     *error = "no scene file given (usage: inkray-render SCENE.json -o OUT.png; see --help)";
     return std::nullopt;
+  }
+  if (!o.write_scene.empty()) {
+    if (!o.output.empty() || !o.aovs.empty()) {
+      *error = "--write-scene writes a scene and renders nothing: leave out -o and --aov";
+      return std::nullopt;
+    }
+    return o;
   }
   if (o.output.empty()) {
     *error = "no output file given: add -o OUT.png (or .pfm, .exr)";

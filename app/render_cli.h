@@ -16,6 +16,7 @@ struct AovOutput {
 struct RenderCliOptions {
   std::filesystem::path scene;
   std::filesystem::path output;
+  std::filesystem::path write_scene;  // --write-scene: save the scene as the editor would, then exit
   std::optional<int> spp, threads, width, height, seed;
   std::optional<double> time_seconds;
   std::vector<AovOutput> aovs;

@@ -86,22 +86,15 @@ bool Document::save(std::string* error) {
 
 bool Document::save_as(const std::filesystem::path& file, std::string* error) {
   const std::filesystem::path absolute = std::filesystem::absolute(file);
-  const std::filesystem::path folder = absolute.parent_path();
+  if (!save_scene_as(scene_, absolute, error)) return false;
   if (scene_.base_dir.empty()) {
-    // Relative paths of a never-saved document resolve against the working
-    // directory; from now on they resolve against the file's folder.
-    SceneDesc moved = scene_;
-    rebase_asset_paths(moved, std::filesystem::current_path(), folder);
-    moved.base_dir = folder;
-    if (!save_scene(moved, absolute, error)) return false;
-    scene_ = std::move(moved);
-  } else {
-    // The document keeps resolving against its base_dir (paths the editor
-    // writes are relative to it); only the file gets paths relative to its folder.
-    SceneDesc written = scene_;
-    rebase_asset_paths(written, scene_.base_dir, folder);
-    if (!save_scene(written, absolute, error)) return false;
+    // Relative paths of a never-saved document resolved against the working directory;
+    // from now on they resolve against the file's folder, as written.
+    rebase_asset_paths(scene_, std::filesystem::current_path(), absolute.parent_path());
+    scene_.base_dir = absolute.parent_path();
   }
+  // Otherwise the document keeps resolving against its base_dir (paths the editor
+  // writes are relative to it); only the file got paths relative to its folder.
   file_ = absolute;
   saved_state_ = history_.state_id();
   return true;

@@ -2,6 +2,7 @@
 // temporary file and rename so an interrupted save never destroys the previous scene.
 #include "core/scene/json_io.h"
 
+#include "core/scene/asset_paths.h"
 #include "core/scene/error_log.h"
 #include "core/scene/json_read.h"
 #include "core/scene/json_syntax.h"
@@ -205,6 +206,19 @@ bool save_scene(const SceneDesc& scene, const fs::path& file, std::string* error
   const fs::path dir = target.parent_path();
   sync_directory(dir.empty() ? fs::path(".") : dir);
   return true;
+}
+
+bool save_scene_as(const SceneDesc& scene, const fs::path& file, std::string* error) {
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(file, ec);
+  if (ec) {
+    if (error) *error = "cannot save " + file.string() + ": " + ec.message();
+    return false;
+  }
+  const fs::path from = scene.base_dir.empty() ? fs::current_path(ec) : scene.base_dir;
+  SceneDesc written = scene;
+  rebase_asset_paths(written, from, absolute.parent_path());
+  return save_scene(written, absolute, error);
 }
 
 }  // namespace inkray

@@ -44,4 +44,9 @@ std::string scene_to_string(const SceneDesc& scene);  // 2-space indent, ends wi
 // false and sets *error (naming the file) on failure, leaving no temporary behind.
 bool save_scene(const SceneDesc& scene, const std::filesystem::path& file, std::string* error);
 
+// Save As: relative asset paths, which resolve against scene.base_dir (the working
+// directory when it is empty), are rewritten relative to the file's folder, then the
+// scene is saved atomically. The editor and `inkray-render --write-scene` both use it.
+bool save_scene_as(const SceneDesc& scene, const std::filesystem::path& file, std::string* error);
+
 }  // namespace inkray

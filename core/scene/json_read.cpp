@@ -166,6 +166,12 @@ bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string&
 }
 
 bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, std::string& out) {
+  // "" for an optional name or path means unset, as an absent key does: files written
+  // before the writer left unset values out say "ramp_image": "" and must still open.
+  if (!p.required && j.is_string() && j.get_ref<const std::string&>().empty()) {
+    out.clear();
+    return true;
+  }
   if (!j.is_string() || j.get_ref<const std::string&>().empty()) {
     const bool is_path = p.kind == ParamKind::path;
     log.add(at, std::string(is_path ? "expected a file path (a non-empty string)"

@@ -66,6 +66,11 @@ struct ParamWriter {
   Json& object;
   template <class T>
   void operator()(const Param& p, const T& field) {
+    // An optional name or path that is unset is left out rather than written as "",
+    // which the reader refuses for what must be a non-empty string.
+    if constexpr (std::is_same_v<T, std::string>) {
+      if (field.empty() && !p.required) return;
+    }
     object[std::string(p.name)] = value_json(p, field);
   }
 };

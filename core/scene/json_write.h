@@ -1,5 +1,6 @@
 // Writes a SceneDesc as JSON through the same visit_params lists the reader uses:
-// every field, defaults included, in declaration order, so files are explicit.
+// every field, defaults included, in declaration order, so files are explicit; only
+// unset optional names and paths are left out (the reader takes absent as unset).
 #pragma once
 
 #include "core/scene/desc.h"

@@ -42,6 +42,26 @@ class InkrayRender : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
+// --write-scene saves the scene as the editor does and renders nothing; the result opens
+// again and renders, for a scene whose unset optional paths used to make it unloadable.
+TEST_F(InkrayRender, WriteSceneSavesWhatTheEditorSavesAndItOpensAgain) {
+  const auto saved = dir_ / "toon.json";
+  RunResult r = run_render(scene("toon.json") + " --write-scene " + saved.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(saved));
+  const auto out = dir_ / "toon.png";
+  r = run_render(saved.string() + " -o " + out.string() + " --spp 1 --width 16 --height 12 -q");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(out));
+
+  r = run_render(scene("toon.json") + " --write-scene " + saved.string() + " -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--write-scene"), std::string::npos) << r.output;
+  r = run_render(scene("toon.json") + " --write-scene " + (dir_ / "no" / "such" / "t.json").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("t.json"), std::string::npos) << r.output;
+}
+
 TEST_F(InkrayRender, RendersImageAndAovsAndPrintsErrorTable) {
   const auto out = dir_ / "c.pfm";
   const RunResult r = run_render(scene("cornell.json") + " -o " + out.string() + " --spp 4 --width 40 --height 40 " +
@@ -105,7 +125,7 @@ TEST_F(InkrayRender, SceneErrorsNameTheFileAndWriteNothing) {
 TEST_F(InkrayRender, HelpDocumentsEveryOption) {
   const RunResult r = run_render("--help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* opt : {"--output", "--spp", "--time", "--threads", "--width", "--height", "--seed", "--aov"})
+  for (const char* opt : {"--output", "--spp", "--time", "--threads", "--width", "--height", "--seed", "--aov", "--write-scene"})
     EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
 
