@@ -1,13 +1,15 @@
 // inkray-render: the headless renderer for final renders and render farms.
 #include "app/render_cli.h"
-#include "core/film/aov_display.h"
 #include "core/film/resolve.h"
-#include "core/image/image_io.h"
 #include "core/render/batch_render.h"
+#include "core/render/render_outputs.h"
 #include "core/scene/compile.h"
 #include "core/scene/json_io.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
+
 #include <unistd.h>
 
 namespace {
@@ -44,12 +46,36 @@ int write_scene_file(const SceneDesc& desc, const std::filesystem::path& file) {
   return 0;
 }
 
-int run(const RenderCliOptions& opt) {
-  SceneLoadResult loaded = load_scene(opt.scene);
+double seconds_since(Cancel::Clock::time_point start) {
+  return std::chrono::duration<double>(Cancel::Clock::now() - start).count();
+}
+
+Cancel::Clock::time_point deadline_after(Cancel::Clock::time_point start, double seconds) {
+  if (seconds <= 0.0) return Cancel::Clock::time_point::max();
+  return start + std::chrono::duration_cast<Cancel::Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+// --time bounds the whole run: the clock starts before the scene is read, and reading,
+// building, rendering and the painterly filter all stop at the deadline. Only the
+// render itself ends in an image; any other phase cut short is an error that writes
+// nothing (a half-built scene or half-filtered image would be a wrong render).
+int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
+  const auto out_of_time = [&](double limit, const char* phase) {
+    std::fprintf(stderr, "error: %s: the time limit of %g s ran out while %s (after %.1f s); nothing was written\n",
+                 opt.scene.c_str(), limit, phase, seconds_since(start));
+    return 1;
+  };
+  // Before the scene is read only --time is known; its render.time_limit applies after.
+  const double cli_limit = opt.time_seconds.value_or(0.0);
+  // --write-scene reads as the editor does: a scene that cannot render yet is still saved.
+  const ReadFor purpose = opt.write_scene.empty() ? ReadFor::rendering : ReadFor::editing;
+  SceneLoadResult loaded = load_scene(opt.scene, purpose, Cancel(nullptr, deadline_after(start, cli_limit)));
+  if (loaded.cancelled) return out_of_time(cli_limit, "reading the scene");
   if (!loaded) {
     for (const auto& e : loaded.errors) std::fprintf(stderr, "error: %s\n", e.c_str());
     return 1;
   }
+  for (const auto& w : loaded.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   SceneDesc desc = std::move(*loaded.scene);
   if (!opt.write_scene.empty()) return write_scene_file(desc, opt.write_scene);
   if (opt.width) desc.render.width = *opt.width;
@@ -60,7 +86,13 @@ int run(const RenderCliOptions& opt) {
                  desc.render.width, desc.render.height);
     return 1;
   }
-  const CompileResult compiled = compile_scene(desc);
+  const double time_limit = opt.time_seconds.value_or(desc.render.time_limit);
+  const Cancel deadline(nullptr, deadline_after(start, time_limit));
+  CompileOptions options;
+  options.cancel = deadline;
+  options.memory_limit = opt.memory_limit.value_or(0);
+  const CompileResult compiled = compile_scene(desc, options);
+  if (compiled.cancelled) return out_of_time(time_limit, "building the scene");
   if (!compiled.scene) {
     for (const auto& e : compiled.errors) std::fprintf(stderr, "error: %s: %s\n", opt.scene.c_str(), e.c_str());
     return 1;
@@ -70,26 +102,36 @@ int run(const RenderCliOptions& opt) {
   for (const auto& a : opt.aovs) aovs.add(*aov_from_name(a.name));
   RenderSession session(opt.threads.value_or(0));
   session.set_scene(compiled.scene, aovs);
-  const BatchLimits limits{opt.spp.value_or(desc.render.spp), opt.time_seconds.value_or(desc.render.time_limit)};
+  // The render gets what reading and building left of the time, less what the painterly
+  // filter will need after it (at least one pass is made).
+  double render_seconds = 0.0;
+  if (time_limit > 0.0) {
+    const double filter_seconds =
+        1.25 * estimate_painterly_seconds(desc.render, desc.render.width, desc.render.height, &session.pool());
+    render_seconds = time_limit - seconds_since(start) - filter_seconds;
+    if (render_seconds <= 0.0) {
+      std::fprintf(stderr,
+                   "error: %s: the painterly filter alone takes about %.1f s at %dx%d, more than the time limit of "
+                   "%g s leaves; nothing was written\n",
+                   opt.scene.c_str(), filter_seconds / 1.25, desc.render.width, desc.render.height, time_limit);
+      return 1;
+    }
+  }
+  const BatchLimits limits{opt.spp.value_or(desc.render.spp), render_seconds};
   const bool progress = !opt.quiet && isatty(fileno(stderr));
   const auto history = render_batch(session, limits, [&](const RenderStats& s) {
     if (progress) print_progress(s, limits);
   });
   if (progress) std::fprintf(stderr, "\n");
 
+  // Every output is staged before any is replaced: a failed AOV leaves no image behind.
+  std::vector<AovFile> aov_files;
+  for (const auto& a : opt.aovs) aov_files.push_back({*aov_from_name(a.name), a.file});
   std::string error;
-  if (!write_image(opt.output, resolve_final(session.film(), session.scene(), &session.pool()), &error)) {
-    std::fprintf(stderr, "error: %s\n", error.c_str());
-    return 1;
-  }
-  for (const auto& a : opt.aovs) {
-    const Aov aov = *aov_from_name(a.name);
-    RgbImage img = session.film().resolve_aov(aov);
-    if (image_format_of(a.file) == ImageFormat::png) img = aov_for_display(aov, img);
-    if (!write_image(a.file, img, &error)) {
-      std::fprintf(stderr, "error: %s\n", error.c_str());
-      return 1;
-    }
+  switch (write_render_outputs(session, opt.output, aov_files, &error, deadline)) {
+    case OutputsWritten::all: break;
+    case OutputsWritten::cancelled: return out_of_time(time_limit, "applying the painterly filter");
+    case OutputsWritten::failed: std::fprintf(stderr, "error: %s\n", error.c_str()); return 1;
   }
   if (!opt.quiet) {
     print_table(history);
@@ -117,7 +159,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
-    return run(*options);
+    return run(*options, inkray::Cancel::Clock::now());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "inkray-render: %s\n", e.what());
     return 1;

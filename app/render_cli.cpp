@@ -2,6 +2,7 @@
 
 #include "core/film/film.h"
 #include "core/image/image_io.h"
+#include "core/io/output_set.h"
 
 #include <charconv>
 #include <cmath>
@@ -17,8 +18,12 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
 
   -o, --output FILE     image to write; .png is 8-bit sRGB, .pfm and .exr are linear float
   --spp N               samples per pixel (default: the scene's render.spp)
-  --time SECONDS        stop after this much render time (default: the scene's render.time_limit;
-                        0 means no limit); the render stops at whichever of --spp and --time comes first
+  --time SECONDS        the whole run, reading and building the scene included, takes at most this
+                        long (default: the scene's render.time_limit; 0 means no limit); the render
+                        stops at whichever of --spp and --time comes first, and a scene that cannot
+                        be built in time is an error that writes nothing
+  --memory-limit SIZE   refuse a scene whose estimated memory is above SIZE (bytes, or with a K, M,
+                        G or T suffix; default: half of this machine's memory)
   --threads N           worker threads (default: one per hardware thread)
   --width W --height H  override the scene's resolution (the aspect ratio follows)
   --seed S              seed of every random decision (default: the scene's render.seed)
@@ -51,6 +56,26 @@ bool parse_number(std::string_view text, T* out) {
     auto [ptr, ec] = std::from_chars(text.data(), end, *out);
     return ec == std::errc() && ptr == end;
   }
+}
+
+// "8G", "512M", "64k", "1000000": bytes, at least 1 MiB and below 2^60.
+std::optional<std::uint64_t> parse_size(std::string_view text) {
+  int shift = 0;
+  if (!text.empty()) {
+    switch (text.back()) {
+      case 'k': case 'K': shift = 10; break;
+      case 'm': case 'M': shift = 20; break;
+      case 'g': case 'G': shift = 30; break;
+      case 't': case 'T': shift = 40; break;
+      default: break;
+    }
+  }
+  if (shift) text.remove_suffix(1);
+  double value = 0.0;
+  if (!parse_number(text, &value) || value <= 0.0) return std::nullopt;
+  const double bytes = std::ldexp(value, shift);
+  if (bytes < double(1 << 20) || bytes >= std::ldexp(1.0, 60)) return std::nullopt;
+  return std::uint64_t(bytes);
 }
 
 }  // namespace
@@ -111,6 +136,15 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
         return std::nullopt;
       }
       o.time_seconds = t;
+    } else if (arg == "--memory-limit") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      o.memory_limit = parse_size(*v);
+      if (!o.memory_limit) {
+        *error = "--memory-limit: expected a size such as 8G, 512M or 1000000000 (bytes), got \"" +
+                 std::string(*v) + "\"";
+        return std::nullopt;
+      }
     } else if (arg == "--aov") {
       const auto v = value_of(i, arg);
       if (!v) return std::nullopt;
@@ -147,19 +181,18 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
     *error = "no output file given: add -o OUT.png (or .pfm, .exr)";
     return std::nullopt;
   }
-  std::vector<std::filesystem::path> outputs = {o.output};
-  for (const auto& a : o.aovs) outputs.push_back(a.file);
-  for (const auto& file : outputs) {
-    if (image_format_of(file) == ImageFormat::unknown) {
-      *error = file.string() + ": unknown image format (expected .png, .pfm or .exr)";
+  // Every output is checked before the render, so a bad path costs no render time.
+  std::vector<PlannedOutput> outputs = {{"-o " + o.output.string(), o.output}};
+  for (const auto& a : o.aovs) outputs.push_back({"--aov " + a.name + "=" + a.file.string(), a.file});
+  for (const auto& planned : outputs) {
+    if (image_format_of(planned.file) == ImageFormat::unknown) {
+      *error = planned.file.string() + ": unknown image format (expected .png, .pfm or .exr)";
       return std::nullopt;
     }
-    const auto dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec)) {
-      *error = file.string() + ": folder " + dir.string() + " does not exist";
-      return std::nullopt;
-    }
+  }
+  if (std::string problem = check_outputs(outputs); !problem.empty()) {
+    *error = std::move(problem);
+    return std::nullopt;
   }
   return o;
 }

@@ -1,5 +1,7 @@
+// The editor's crash-recovery file and its origin note, both replaced atomically.
 #include "ui/autosave.h"
 
+#include "core/io/atomic_file.h"
 #include "core/scene/json_io.h"
 
 #include <fstream>
@@ -23,9 +25,10 @@ bool Autosave::write(const SceneDesc& scene, const std::filesystem::path& origin
   std::filesystem::create_directories(file_.parent_path(), ec);
   if (!save_scene(scene, file_, error)) return false;
   // The origin note names the asset folder, so relative paths still resolve on restore.
-  std::ofstream out(origin_file(), std::ios::trunc);
-  out << original.string() << '\n' << scene.base_dir.string() << '\n';
-  return bool(out);
+  // Replaced atomically too: a truncated note would restore with the wrong asset folder.
+  remove_stale_temporaries(origin_file());
+  return write_file_atomically(origin_file(), original.string() + '\n' + scene.base_dir.string() + '\n',
+                               error);
 }
 
 void Autosave::clear() {
@@ -36,6 +39,9 @@ void Autosave::clear() {
 }
 
 std::optional<Recovery> Autosave::find(std::vector<std::string>* errors) const {
+  // At start-up no write of ours is running, so whatever a killed one left can go.
+  remove_stale_temporaries(file_);
+  remove_stale_temporaries(origin_file());
   std::ifstream in(file_);
   if (!in) return std::nullopt;
   std::stringstream text;
@@ -44,7 +50,8 @@ std::optional<Recovery> Autosave::find(std::vector<std::string>* errors) const {
   std::ifstream origin(origin_file());
   std::getline(origin, original);
   std::getline(origin, base_dir);
-  SceneLoadResult loaded = parse_scene(text.str(), base_dir, file_.string());
+  // Whatever the editor held is recovered, even a document that cannot render yet.
+  SceneLoadResult loaded = parse_scene(text.str(), base_dir, file_.string(), ReadFor::editing);
   if (!loaded) {
     if (errors) *errors = std::move(loaded.errors);
     return std::nullopt;

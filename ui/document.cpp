@@ -58,8 +58,10 @@ bool Document::redo() {
   return true;
 }
 
-bool Document::open(const std::filesystem::path& file, std::vector<std::string>* errors) {
-  SceneLoadResult loaded = load_scene(file);
+bool Document::open(const std::filesystem::path& file, std::vector<std::string>* errors,
+                    std::vector<std::string>* warnings) {
+  SceneLoadResult loaded = load_scene(file, ReadFor::editing);
+  if (warnings) *warnings = std::move(loaded.warnings);
   if (!loaded) {
     if (errors) *errors = std::move(loaded.errors);
     return false;

@@ -31,8 +31,11 @@ class Document {
   bool redo();
   const CommandStack& history() const { return history_; }
 
-  // Replaces the document; on failure the current one stays and *errors says why.
-  bool open(const std::filesystem::path& file, std::vector<std::string>* errors);
+  // Replaces the document; on failure the current one stays and *errors says why. A
+  // document that opens but cannot render yet (a missing file, a dangling name) lists
+  // why in *warnings, so the user can mend it.
+  bool open(const std::filesystem::path& file, std::vector<std::string>* errors,
+            std::vector<std::string>* warnings = nullptr);
   void reset(SceneDesc scene, std::filesystem::path file = {}, bool dirty = false);
   bool save(std::string* error);
   bool save_as(const std::filesystem::path& file, std::string* error);

@@ -93,8 +93,8 @@ void EditorApp::run(Pending action, const std::filesystem::path& file) {
 }
 
 void EditorApp::open_file(const std::filesystem::path& file) {
-  std::vector<std::string> errors;
-  if (!state_.document.open(file, &errors)) {
+  std::vector<std::string> errors, warnings;
+  if (!state_.document.open(file, &errors, &warnings)) {
     // The current document stays; the errors go to a dialog and the log.
     for (const auto& e : errors) state_.log.error(e);
     load_errors_ = std::move(errors);
@@ -106,6 +106,7 @@ void EditorApp::open_file(const std::filesystem::path& file) {
   state_.region = {};
   recent_.add(file);
   state_.log.info("opened " + file.string());
+  for (const auto& w : warnings) state_.log.warning(w + " (the scene opens, but renders once this is mended)");
 }
 
 void EditorApp::save(bool choose_file) {

@@ -62,11 +62,13 @@ void ParamWidgets::operator()(const Param& p, Vec3& v) {
   bool edited = false;
   if (p.kind == ParamKind::color) {
     edited = ImGui::ColorEdit3(label_of(p).c_str(), &value.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    value = glm::max(value, Vec3(0.f));
   } else {
     edited = ImGui::DragFloat3(label_of(p).c_str(), &value.x, 0.01f, 0.f, 0.f, "%.3f");
   }
   tooltip(p);
+  // The document only ever holds what the reader accepts, so every save opens again.
+  for (int i = 0; i < 3; ++i) value[i] = clamp_to(p, value[i]);
+  if (p.kind == ParamKind::direction && value == Vec3(0.f)) return;  // a zero direction has none
   if (edited && value != v) v = value, note(p);
 }
 

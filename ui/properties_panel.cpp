@@ -42,8 +42,13 @@ void commit_named(EditorState& state, const Selection& sel, std::vector<T> Scene
 
 bool edit_transform(TransformDesc& t, std::string* param) {
   bool changed = false;
-  if (ImGui::DragFloat3("translate", &t.translate.x, 0.01f, 0.f, 0.f, "%.3f")) changed = true, *param = "translate";
-  if (ImGui::DragFloat3("scale", &t.scale.x, 0.01f, 0.f, 0.f, "%.3f")) changed = true, *param = "scale";
+  // Within what the reader accepts: positions in +-kMaxCoordinate, no zero scale factor.
+  const float reach = float(kMaxCoordinate);
+  if (ImGui::DragFloat3("translate", &t.translate.x, 0.01f, -reach, reach, "%.3f")) changed = true, *param = "translate";
+  Vec3 scale = t.scale;
+  if (ImGui::DragFloat3("scale", &scale.x, 0.01f, -reach, reach, "%.3f") && scale.x != 0.f && scale.y != 0.f &&
+      scale.z != 0.f)
+    t.scale = scale, changed = true, *param = "scale";
   for (size_t i = 0; i < t.rotate.size(); ++i) {
     ImGui::PushID(int(i));
     std::string rotation_param;

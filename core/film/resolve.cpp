@@ -1,18 +1,25 @@
+// The final image, and what its painterly filter will cost.
 #include "core/film/resolve.h"
 
 #include "core/npr/painterly_filter.h"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
 namespace inkray {
 namespace {
 
-// The filter radius is given for a 1080-line image, so the look holds at any resolution.
-RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadPool* pool) {
+// The filter radius is given for a 1080-line image, so the look holds at any
+// resolution: `full_height` is the image's, or the full image's for a crop.
+RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadPool* pool, const Cancel& cancel,
+                         int full_height) {
   if (settings.painterly == PainterlyFilter::none) return image;
   PainterlyFilterParams params;
-  params.radius = settings.painterly_radius * float(image.height) / 1080.f;
+  params.radius = settings.painterly_radius * float(full_height) / 1080.f;
   params.sharpness = settings.painterly_sharpness;
-  return settings.painterly == PainterlyFilter::kuwahara ? kuwahara_filter(image, params, pool)
-                                                         : anisotropic_kuwahara_filter(image, params, pool);
+  return settings.painterly == PainterlyFilter::kuwahara ? kuwahara_filter(image, params, pool, cancel)
+                                                         : anisotropic_kuwahara_filter(image, params, pool, cancel);
 }
 
 // Line colours go over the filtered image, so the filter never smears them.
@@ -39,10 +46,25 @@ void composite_lines(const Film& film, const OutlineDesc& outlines, RgbImage& im
 }  // namespace
 
 RgbImage resolve_final(const Film& film, const RenderSettings& settings, const OutlineDesc& outlines,
-                       ThreadPool* pool) {
-  RgbImage image = apply_painterly(film.resolve(), settings, pool);
+                       ThreadPool* pool, const Cancel& cancel) {
+  RgbImage image = apply_painterly(film.resolve(), settings, pool, cancel, film.height());
+  if (image.pixels.empty()) return image;  // the filter was cut short
   if (film.has_lines()) composite_lines(film, outlines, image);
   return image;
+}
+
+double estimate_painterly_seconds(const RenderSettings& settings, int width, int height, ThreadPool* pool) {
+  if (settings.painterly == PainterlyFilter::none || width <= 0 || height <= 0) return 0.0;
+  // A crop with edges in both directions, so the anisotropic filter's ellipses take
+  // every shape; a pixel's cost depends on the radius, hardly on the picture.
+  const int w = std::min(width, 64), h = std::min(height, 64);
+  RgbImage crop{w, h, std::vector<Color>(size_t(w) * size_t(h))};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) crop.at(x, y) = Color(float((x / 8 + y / 8) % 2), float(x) / float(w), 0.5f);
+  const auto start = std::chrono::steady_clock::now();
+  apply_painterly(std::move(crop), settings, pool, Cancel{}, height);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return seconds * (double(width) * double(height)) / (double(w) * double(h));
 }
 
 }  // namespace inkray

@@ -7,6 +7,7 @@
 #include <embree3/rtcore.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 #include <stdexcept>
@@ -87,6 +88,16 @@ bool alpha_accepts(const AlphaTested& g, const RTCFilterFunctionNArguments* args
 void alpha_filter(const RTCFilterFunctionNArguments* args) {
   if (!args->valid[0]) return;
   if (!alpha_accepts(*static_cast<const AlphaTested*>(args->geometryUserPtr), args)) args->valid[0] = 0;
+}
+
+// Debian's Embree is built with assertions: a ray whose origin is not finite or
+// lies beyond about 1.8e18 aborts the process. compile_scene keeps geometry and
+// cameras far inside that; this last check (one compare per axis) turns a ray that
+// got there anyway into a miss instead of a crash.
+bool traceable(const Ray& ray, float t_max) {
+  constexpr float kLimit = 1e18f;
+  return std::fabs(ray.o.x) < kLimit && std::fabs(ray.o.y) < kLimit && std::fabs(ray.o.z) < kLimit &&
+         std::isfinite(ray.d.x + ray.d.y + ray.d.z) && t_max >= 0.f;
 }
 
 RTCRay to_rtc(const Ray& ray, float t_max) {
@@ -214,6 +225,7 @@ void EmbreeScene::commit() {
 bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
+  if (!traceable(ray, t_max)) return false;
   RTCRayHit rh{};
   rh.ray = to_rtc(ray, t_max);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -230,6 +242,7 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit) const {
 bool EmbreeScene::occluded(const Ray& ray, float t_max) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
+  if (!traceable(ray, t_max)) return false;
   RTCRay r = to_rtc(ray, t_max);
   rtcOccluded1(impl_->scene, &context, &r);
   return r.tfar < 0.f;

@@ -1,4 +1,9 @@
+// Image files: encoding PNG, PFM and EXR to bytes (written through core/io's atomic
+// replacement) and reading textures and PFM back.
 #include "core/image/image_io.h"
+
+#include "core/image/image_header.h"
+#include "core/io/atomic_file.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -6,86 +11,79 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <random>
-#include <system_error>
-#include <unistd.h>
 
 namespace inkray {
 namespace {
 
-std::filesystem::path temporary_beside(const std::filesystem::path& file) {
-  std::random_device rd;
-  char suffix[32];
-  std::snprintf(suffix, sizeof(suffix), ".tmp-%08x", rd());
-  return file.string() + suffix;
-}
-
-// Writes bytes to a temporary file, flushes it to disk and renames it over `file`.
-bool write_atomically(const std::filesystem::path& file, const void* data, size_t size, std::string* error) {
-  const auto tmp = temporary_beside(file);
-  FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) {
-    *error = file.string() + ": cannot write (" + std::strerror(errno) + ")";
-    return false;
-  }
-  const bool ok = std::fwrite(data, 1, size, f) == size && std::fflush(f) == 0 && fsync(fileno(f)) == 0;
-  std::fclose(f);
-  std::error_code ec;
-  if (ok) std::filesystem::rename(tmp, file, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(tmp, ec);
-    *error = file.string() + ": write failed" + (ec ? " (" + ec.message() + ")" : "");
+bool encode_png(const std::filesystem::path& file, const RgbImage& image, std::string* bytes,
+                std::string* error) {
+  const std::vector<uint8_t> rgb = encode_srgb8(image);
+  auto append = [](void* ctx, void* data, int size) {
+    static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), size_t(size));
+  };
+  if (!stbi_write_png_to_func(append, bytes, image.width, image.height, 3, rgb.data(), image.width * 3)) {
+    *error = file.string() + ": PNG encoding failed";
     return false;
   }
   return true;
 }
 
-bool write_png(const std::filesystem::path& file, const RgbImage& image, std::string* error) {
-  const std::vector<uint8_t> rgb = encode_srgb8(image);
-  std::vector<uint8_t> bytes;
-  auto append = [](void* ctx, void* data, int size) {
-    auto* out = static_cast<std::vector<uint8_t>*>(ctx);
-    out->insert(out->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
-  };
-  if (!stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, rgb.data(), image.width * 3)) {
-    *error = file.string() + ": PNG encoding failed";
-    return false;
-  }
-  return write_atomically(file, bytes.data(), bytes.size(), error);
-}
-
-bool write_pfm(const std::filesystem::path& file, const RgbImage& image, std::string* error) {
+void encode_pfm(const RgbImage& image, std::string* bytes) {
   // PFM rows run bottom to top; a negative scale means little-endian.
-  std::string header = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
-  std::vector<char> bytes(header.begin(), header.end());
+  *bytes = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
   for (int y = image.height - 1; y >= 0; --y) {
     const char* row = reinterpret_cast<const char*>(&image.at(0, y));
-    bytes.insert(bytes.end(), row, row + sizeof(Color) * size_t(image.width));
+    bytes->append(row, sizeof(Color) * size_t(image.width));
   }
-  return write_atomically(file, bytes.data(), bytes.size(), error);
 }
 
-bool write_exr(const std::filesystem::path& file, const RgbImage& image, std::string* error) {
-  const auto tmp = temporary_beside(file);
+// What tinyexr's SaveEXR writes (32-bit float B, G, R planes; ZIP unless tiny), but to
+// memory, so the file goes through the same flushed, atomic write as PNG and PFM.
+bool encode_exr(const std::filesystem::path& file, const RgbImage& image, std::string* bytes,
+                std::string* error) {
+  const size_t n = image.pixels.size();
+  std::vector<float> planes[3];
+  for (int c = 0; c < 3; ++c) {
+    planes[c].resize(n);
+    for (size_t i = 0; i < n; ++i) planes[c][i] = image.pixels[i][c];
+  }
+  float* channel_data[3] = {planes[2].data(), planes[1].data(), planes[0].data()};  // B, G, R
+  EXRImage exr_image;
+  InitEXRImage(&exr_image);
+  exr_image.images = reinterpret_cast<unsigned char**>(channel_data);
+  exr_image.width = image.width;
+  exr_image.height = image.height;
+  exr_image.num_channels = 3;
+
+  EXRChannelInfo channels[3] = {};
+  int pixel_types[3], requested_types[3];
+  for (int c = 0; c < 3; ++c) {
+    channels[c].name[0] = "BGR"[c];
+    pixel_types[c] = requested_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+  }
+  EXRHeader header;
+  InitEXRHeader(&header);
+  header.compression_type =
+      image.width < 16 && image.height < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
+  header.num_channels = 3;
+  header.channels = channels;
+  header.pixel_types = pixel_types;
+  header.requested_pixel_types = requested_types;
+
+  unsigned char* memory = nullptr;
   const char* err = nullptr;
-  const int rc = SaveEXR(reinterpret_cast<const float*>(image.pixels.data()), image.width, image.height, 3,
-                         /*save_as_fp16=*/0, tmp.c_str(), &err);
-  std::error_code ec;
-  if (rc != TINYEXR_SUCCESS) {
-    *error = file.string() + ": EXR write failed" + (err ? std::string(" (") + err + ")" : "");
+  const size_t size = SaveEXRImageToMemory(&exr_image, &header, &memory, &err);
+  if (size == 0 || !memory) {
+    *error = file.string() + ": EXR encoding failed" + (err ? std::string(" (") + err + ")" : "");
     if (err) FreeEXRErrorMessage(err);
-    std::filesystem::remove(tmp, ec);
+    std::free(memory);
     return false;
   }
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) {
-    *error = file.string() + ": cannot write (" + ec.message() + ")";
-    std::filesystem::remove(tmp, ec);
-    return false;
-  }
+  bytes->assign(reinterpret_cast<const char*>(memory), size);
+  std::free(memory);
   return true;
 }
 
@@ -117,15 +115,22 @@ std::vector<uint8_t> encode_srgb8(const RgbImage& image, float exposure_stops) {
   return out;
 }
 
-bool write_image(const std::filesystem::path& file, const RgbImage& image, std::string* error) {
+bool encode_image(const std::filesystem::path& file, const RgbImage& image, std::string* bytes,
+                  std::string* error) {
+  bytes->clear();
   switch (image_format_of(file)) {
-    case ImageFormat::png: return write_png(file, image, error);
-    case ImageFormat::pfm: return write_pfm(file, image, error);
-    case ImageFormat::exr: return write_exr(file, image, error);
+    case ImageFormat::png: return encode_png(file, image, bytes, error);
+    case ImageFormat::pfm: encode_pfm(image, bytes); return true;
+    case ImageFormat::exr: return encode_exr(file, image, bytes, error);
     case ImageFormat::unknown: break;
   }
   *error = file.string() + ": unknown image format (expected .png, .pfm or .exr)";
   return false;
+}
+
+bool write_image(const std::filesystem::path& file, const RgbImage& image, std::string* error) {
+  std::string bytes;
+  return encode_image(file, image, &bytes, error) && write_file_atomically(file, bytes, error);
 }
 
 bool read_image(const std::filesystem::path& file, bool srgb, RgbImage* image, std::string* error) {
@@ -136,6 +141,7 @@ bool read_image(const std::filesystem::path& file, bool srgb, RgbImage* image, s
     return false;
   };
   image->pixels.clear();
+  if (!read_image_size(file, error)) return false;  // before decoding: the header may ask for gigabytes
   if (stbi_is_hdr(name.c_str())) {
     float* data = stbi_loadf(name.c_str(), &w, &h, &channels, 3);
     if (!data) return fail();
@@ -163,7 +169,8 @@ bool read_pfm(const std::filesystem::path& file, RgbImage* image, std::string* e
   std::string magic;
   int w = 0, h = 0;
   float scale = 0.f;
-  if (!(in >> magic >> w >> h >> scale) || magic != "PF" || w <= 0 || h <= 0 || w > 65536 || h > 65536 ||
+  if (!(in >> magic >> w >> h >> scale) || magic != "PF" || w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide ||
+      ImageSize{w, h}.texels() > kMaxImageTexels ||
       scale >= 0.f) {
     *error = file.string() + ": not a little-endian RGB PFM file";
     return false;

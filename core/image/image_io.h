@@ -1,6 +1,6 @@
 // Image files. Writing: PNG (8-bit sRGB), PFM and EXR (linear float), chosen by
-// the file extension, through a temporary file renamed into place, so a failed
-// or interrupted write never leaves a half-written image. Reading: textures
+// the file extension, encoded to bytes and then replaced atomically (core/io), so a
+// failed or interrupted write never leaves a half-written image. Reading: textures
 // through stb_image, and PFM.
 #pragma once
 
@@ -20,8 +20,13 @@ float srgb_to_linear(float encoded);
 // 8-bit sRGB, clamped, with exposure in stops applied first.
 std::vector<uint8_t> encode_srgb8(const RgbImage& image, float exposure_stops = 0.f);
 
-// Writes by extension: .png gets sRGB encoding, .pfm and .exr stay linear.
-// On failure returns false and sets *error to a line naming the file.
+// The bytes of the file write_image would write, for callers that stage several outputs
+// (core/io/output_set.h) before replacing any. False with *error naming the file.
+bool encode_image(const std::filesystem::path& file, const RgbImage& image, std::string* bytes,
+                  std::string* error);
+// Writes by extension: .png gets sRGB encoding, .pfm and .exr stay linear. The write
+// is atomic and follows a symbolic link to replace the file it names.
+// On failure returns false and sets *error to a line naming the file and the cause.
 bool write_image(const std::filesystem::path& file, const RgbImage& image, std::string* error);
 // Reads a PFM written by write_image (used by tests and benchmark caches).
 bool read_pfm(const std::filesystem::path& file, RgbImage* image, std::string* error);

@@ -6,6 +6,7 @@
 #include "core/image/image_io.h"
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cmath>
 #include <type_traits>
@@ -50,13 +51,23 @@ float judged_value(float linear) {
   return linear_to_srgb(x / (1.f + x));
 }
 
+// True when every row ran; rows not yet started are skipped once cancel is requested.
 template <class RowFn>
-void for_rows(int height, ThreadPool* pool, const RowFn& row_fn) {
+bool for_rows(int height, ThreadPool* pool, const RowFn& row_fn, const Cancel& cancel = {}) {
+  std::atomic<int> skipped{0};
+  const auto row = [&](int y) {
+    if (cancel.requested()) {
+      skipped.fetch_add(1, std::memory_order_relaxed);
+    } else {
+      row_fn(y);
+    }
+  };
   if (pool) {
-    pool->parallel_for(height, [&](int y, int) { row_fn(y); });
+    pool->parallel_for(height, [&](int y, int) { row(y); });
   } else {
-    for (int y = 0; y < height; ++y) row_fn(y);
+    for (int y = 0; y < height; ++y) row(y);
   }
+  return skipped.load() == 0;
 }
 
 Source prepare_source(const RgbImage& image, ThreadPool* pool) {
@@ -282,17 +293,17 @@ std::vector<Tap<N>> disc_taps(const SectorTable& table, float radius) {
 }
 
 template <int N>
-void kuwahara_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadPool* pool,
-                   RgbImage& out) {
+bool kuwahara_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadPool* pool,
+                   const Cancel& cancel, RgbImage& out) {
   const std::vector<Tap<N>> taps = disc_taps<N>(table, radius);
-  for_rows(source.height, pool, [&](int y) {
+  return for_rows(source.height, pool, [&](int y) {
     for (int x = 0; x < source.width; ++x) {
       const Texel& centre = source.at(x, y);
       SectorSums<N> sums;
       for (const Tap<N>& tap : taps) sums.add(tap.w, source.clamped(x + tap.dx, y + tap.dy), centre);
       out.at(x, y) = sums.combine(q, centre);
     }
-  });
+  }, cancel);
 }
 
 // ---------------------------------------------------------------- anisotropic Kuwahara
@@ -404,17 +415,17 @@ Color filter_ellipse(const Source& source, int x, int y, const Ellipse& ellipse,
 }
 
 template <int N>
-void anisotropic_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadPool* pool,
-                      RgbImage& out) {
+bool anisotropic_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadPool* pool,
+                      const Cancel& cancel, RgbImage& out) {
   const std::vector<Vec3> tensor = structure_tensor(source, pool);
   const Weights<N> centre_weights = table.weights<N>(Vec2(0.f));
-  for_rows(source.height, pool, [&](int y) {
+  return for_rows(source.height, pool, [&](int y) {
     for (int x = 0; x < source.width; ++x) {
       const Ellipse ellipse =
           ellipse_from_tensor(tensor[size_t(y) * size_t(source.width) + size_t(x)], radius);
       out.at(x, y) = filter_ellipse<N>(source, x, y, ellipse, table, centre_weights, q);
     }
-  });
+  }, cancel);
 }
 
 int clamp_sectors(int sectors) { return std::clamp(sectors, 1, kMaxSectors); }
@@ -423,31 +434,34 @@ float clamp_sharpness(float q) { return std::isfinite(q) ? std::max(q, 0.f) : 8.
 
 }  // namespace
 
-RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params, ThreadPool* pool) {
+RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params, ThreadPool* pool,
+                         const Cancel& cancel) {
   RgbImage out{image.width, image.height, std::vector<Color>(image.pixels.size())};
   if (image.width <= 0 || image.height <= 0) return out;
   const int sectors = clamp_sectors(params.sectors);
   const SectorTable table(sectors);
   const Source source = prepare_source(image, pool);
+  bool finished = false;
   with_sector_count(padded_sectors(sectors), [&](auto n) {
-    kuwahara_rows<n()>(source, table, clamp_radius(params.radius), clamp_sharpness(params.sharpness), pool,
-                       out);
+    finished = kuwahara_rows<n()>(source, table, clamp_radius(params.radius), clamp_sharpness(params.sharpness),
+                                  pool, cancel, out);
   });
-  return out;
+  return finished ? out : RgbImage{};
 }
 
 RgbImage anisotropic_kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params,
-                                     ThreadPool* pool) {
+                                     ThreadPool* pool, const Cancel& cancel) {
   RgbImage out{image.width, image.height, std::vector<Color>(image.pixels.size())};
   if (image.width <= 0 || image.height <= 0) return out;
   const int sectors = clamp_sectors(params.sectors);
   const SectorTable table(sectors);
   const Source source = prepare_source(image, pool);
+  bool finished = false;
   with_sector_count(padded_sectors(sectors), [&](auto n) {
-    anisotropic_rows<n()>(source, table, clamp_radius(params.radius), clamp_sharpness(params.sharpness), pool,
-                          out);
+    finished = anisotropic_rows<n()>(source, table, clamp_radius(params.radius),
+                                     clamp_sharpness(params.sharpness), pool, cancel, out);
   });
-  return out;
+  return finished ? out : RgbImage{};
 }
 
 }  // namespace inkray

@@ -1,17 +1,66 @@
+// Final renders: passes until the sample count or the time limit. A pass can take
+// long (a closed white room at 1024 bounces, an 8K image), so the time limit also
+// stops a pass in flight, once the first has given every pixel a sample.
 #include "core/render/batch_render.h"
 
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
 namespace inkray {
+namespace {
+
+// Cancels the session's passes once the time limit passes, until stopped.
+class PassDeadline {
+ public:
+  PassDeadline(RenderSession& session, double seconds) {
+    if (seconds <= 0.0) return;
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                               std::chrono::duration<double>(seconds));
+    watcher_ = std::thread([this, &session, deadline] {
+      std::unique_lock lock(mutex_);
+      if (!wake_.wait_until(lock, deadline, [this] { return stopped_; })) session.cancel();
+    });
+  }
+  ~PassDeadline() {
+    {
+      std::lock_guard lock(mutex_);
+      stopped_ = true;
+    }
+    wake_.notify_all();
+    if (watcher_.joinable()) watcher_.join();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stopped_ = false;
+  std::thread watcher_;
+};
+
+}  // namespace
 
 std::vector<PassRecord> render_batch(RenderSession& session, const BatchLimits& limits,
                                      const std::function<void(const RenderStats&)>& on_pass) {
   std::vector<PassRecord> history;
-  while (int(session.stats().spp) < limits.spp) {
-    if (!session.render_pass()) break;
+  const auto record = [&] {
     const RenderStats& s = session.stats();
     history.push_back({s.passes, s.spp, s.elapsed_seconds, s.relative_error});
     if (on_pass) on_pass(s);
-    // The time limit is checked between passes, so a pass in flight finishes.
-    if (limits.time_seconds > 0.0 && s.elapsed_seconds >= limits.time_seconds) break;
+  };
+  // The first pass always completes: an image needs a sample in every pixel.
+  if (limits.spp <= 0 || !session.render_pass()) return history;
+  record();
+  const double left = limits.time_seconds - session.stats().elapsed_seconds;
+  if (limits.time_seconds > 0.0 && left <= 0.0) return history;
+  // Later passes stop at the limit even mid-pass. The tiles a cut pass finished keep
+  // their sample: the film counts samples per pixel, so every pixel's mean is right.
+  PassDeadline deadline(session, limits.time_seconds > 0.0 ? left : 0.0);
+  while (int(session.stats().spp) < limits.spp) {
+    if (!session.render_pass()) break;
+    record();
   }
   return history;
 }

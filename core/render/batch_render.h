@@ -21,7 +21,8 @@ struct PassRecord {
   double relative_error = 0.0;
 };
 
-// Renders into the session's film; on_pass runs after every completed pass.
+// Renders into the session's film; on_pass runs after every completed pass. The
+// first pass always completes; after it, the time limit cuts a pass in flight.
 std::vector<PassRecord> render_batch(RenderSession& session, const BatchLimits& limits,
                                      const std::function<void(const RenderStats&)>& on_pass = {});
 

@@ -1,8 +1,7 @@
 #include "core/render/export_job.h"
 
-#include "core/film/aov_display.h"
-#include "core/film/resolve.h"
-#include "core/image/image_io.h"
+#include "core/io/output_set.h"
+#include "core/render/render_outputs.h"
 #include "core/render/render_session.h"
 #include "core/scene/compile.h"
 
@@ -41,7 +40,19 @@ void ExportJob::run(ExportRequest request) {
     std::lock_guard lock(mutex_);
     error_ = std::move(message);
   };
-  CompileResult compiled = compile_scene(request.scene);
+  // Output paths are checked before minutes of rendering, not after.
+  std::vector<AovFile> aov_files;
+  for (Aov a : request.aovs) aov_files.push_back({a, aov_path(request.output, a)});
+  std::vector<PlannedOutput> planned = {{request.output.string(), request.output}};
+  for (const AovFile& a : aov_files) planned.push_back({a.file.string(), a.file});
+  if (std::string problem = check_outputs(planned); !problem.empty()) {
+    fail(std::move(problem));
+    done_.store(true);
+    return;
+  }
+  CompileOptions options;
+  options.cancel = Cancel(&cancelled_);  // a huge scene's build stops at Cancel too
+  CompileResult compiled = compile_scene(request.scene, options);
   if (!compiled.scene) {
     fail(compiled.errors.empty() ? "the scene did not compile" : compiled.errors.front());
     done_.store(true);
@@ -66,23 +77,13 @@ void ExportJob::run(ExportRequest request) {
     done_.store(true);
     return;
   }
+  // The image and its AOVs land together or not at all: a failed AOV leaves no image.
   std::string error;
-  if (!write_image(request.output, resolve_final(session.film(), session.scene(), &session.pool()), &error)) {
+  if (write_render_outputs(session, request.output, aov_files, &error, Cancel(&cancelled_)) != OutputsWritten::all) {
     fail(error);
   } else {
     std::lock_guard lock(mutex_);
-    written_.push_back(request.output);
-  }
-  for (Aov a : request.aovs) {
-    RgbImage img = session.film().resolve_aov(a);
-    const std::filesystem::path file = aov_path(request.output, a);
-    if (image_format_of(file) == ImageFormat::png) img = aov_for_display(a, img);
-    if (!write_image(file, img, &error)) {
-      fail(error);
-    } else {
-      std::lock_guard lock(mutex_);
-      written_.push_back(file);
-    }
+    for (const auto& p : planned) written_.push_back(p.file);
   }
   progress_.store(1.f);
   done_.store(true);

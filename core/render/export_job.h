@@ -1,6 +1,7 @@
-// A final render of a document in the background: compiles it, renders to its
-// sample or time limit on its own session, and writes the image (PNG, PFM or
-// EXR by extension) and any AOVs beside it. The caller polls progress().
+// A final render of a document in the background: checks the output paths, compiles
+// it, renders to its sample or time limit on its own session, and writes the image
+// (PNG, PFM or EXR by extension) and any AOVs beside it, all of them or none
+// (core/io/output_set.h). The caller polls progress().
 #pragma once
 
 #include "core/film/film.h"

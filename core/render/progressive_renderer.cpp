@@ -46,6 +46,7 @@ ProgressiveRenderer::~ProgressiveRenderer() {
     std::lock_guard lock(mutex_);
     stop_ = true;
   }
+  superseded_.store(true);
   session_.cancel();
   wake_.notify_all();
   worker_.join();
@@ -59,6 +60,7 @@ uint64_t ProgressiveRenderer::submit(const SceneDesc& scene) {
     revision = pending_revision_ = ++revisions_;
     pending_time_ = std::chrono::steady_clock::now();
   }
+  superseded_.store(true);
   session_.cancel();
   wake_.notify_all();
   return revision;
@@ -141,6 +143,7 @@ void ProgressiveRenderer::run() {
       if (stop_) return;
       desc = std::move(pending_);
       pending_.reset();
+      superseded_.store(false);  // under the lock: a submit() after this sets it again
       revision = pending_revision_;
       revision_time = pending_time_;
       restart = std::exchange(restart_, false);
@@ -163,8 +166,14 @@ void ProgressiveRenderer::run() {
     if (desc) {
       compiled_text_ = without_camera(*desc);
       camera_.reset();
-      CompileResult compiled = compile_scene(*desc);
+      CompileOptions options;
+      options.cancel = Cancel(&superseded_);
+      CompileResult compiled = compile_scene(*desc, options);
       std::lock_guard lock(mutex_);
+      if (compiled.cancelled) {
+        compiled_text_.clear();  // nothing was built for it
+        continue;                // the newer document is waiting
+      }
       if (!compiled.scene) {
         messages_.insert(messages_.end(), compiled.errors.begin(), compiled.errors.end());
         continue;  // the last good scene stays on screen
@@ -236,7 +245,10 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
     // exposure slider still applies to make small errors visible.
     snap->rgba = encode_display(film.resolve_noise(), DisplayEncoding{view.encoding.exposure, ViewTransform::raw});
   } else {
-    snap->rgba = encode_display(resolve_final(film, *scene, &session_.pool()), view.encoding);
+    const Cancel cancel(&superseded_);
+    RgbImage image = resolve_final(film, *scene, &session_.pool(), cancel);
+    if (image.pixels.empty()) return;  // cut short: the newer document is waiting
+    snap->rgba = encode_display(image, view.encoding);
   }
   if (view.highlight_object >= 0 && film.aovs().has(Aov::object_id)) {
     // Previews are magnified, so their 1-pixel line is already thick on screen.

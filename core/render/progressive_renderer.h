@@ -10,6 +10,7 @@
 #include "core/render/render_session.h"
 #include "core/scene/desc.h"
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <memory>
@@ -91,6 +92,10 @@ class ProgressiveRenderer {
   bool limits_reached(const ViewportLimits& limits) const;
 
   RenderSession session_;
+  // Set when a newer document arrives (or the renderer stops): the compile and the
+  // painterly filter in flight give up, so an edit shows within a frame or two even
+  // after an edit that takes seconds to build.
+  std::atomic<bool> superseded_{false};
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::thread worker_;

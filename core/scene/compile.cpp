@@ -3,8 +3,12 @@
 #include "core/lights/light_sampling.h"
 #include "core/scene/compile_materials.h"
 #include "core/scene/compile_strokes.h"
+#include "core/scene/memory_budget.h"
 #include "core/scene/obj_loader.h"
+#include "core/scene/scene_checks.h"
 
+#include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace inkray {
@@ -81,6 +85,31 @@ EnvironmentLight compile_environment(const EnvironmentDesc& env, float scene_rad
   return e;
 }
 
+void shape_bounds(const Shape& shape, Point3* lo, Point3* hi) {
+  if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere->bounds(lo, hi);
+  const TriangleMesh& mesh = std::get<TriangleMesh>(shape);
+  *lo = Point3(std::numeric_limits<float>::infinity());
+  *hi = -*lo;
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    *lo = glm::min(*lo, mesh.positions[v]);
+    *hi = glm::max(*hi, mesh.positions[v]);
+  }
+}
+
+// Empty when the shape lies within kMaxWorldCoordinate, else why not.
+std::string world_extent_problem(const Shape& shape) {
+  Point3 lo, hi;
+  shape_bounds(shape, &lo, &hi);
+  const float reach = std::max(max_component(glm::abs(lo)), max_component(glm::abs(hi)));
+  if (std::isfinite(reach) && reach <= kMaxWorldCoordinate) return {};
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "after its transform the shape reaches %g units from the origin; the limit is %g "
+                "(scale it down or move it closer)",
+                double(reach), double(kMaxWorldCoordinate));
+  return text;
+}
+
 size_t material_source(const SceneDesc& desc, const ObjectDesc& obj) {
   for (size_t m = 0; m < desc.materials.size(); ++m)
     if (desc.materials[m].name == obj.material) return m;
@@ -106,8 +135,22 @@ Transform transform_from_desc(const TransformDesc& desc) {
   return Transform::translate(desc.translate) * t;
 }
 
-CompileResult compile_scene(const SceneDesc& desc) {
+CompileResult compile_scene(const SceneDesc& desc, const CompileOptions& options) {
   CompileResult result;
+  const auto cancelled = [&] {
+    if (!options.cancel.requested()) return false;
+    result.cancelled = true;
+    result.scene.reset();
+    result.errors = {"cancelled while building the scene"};
+    return true;
+  };
+  // The editor holds documents that cannot render yet (an unset file, a dangling name):
+  // they stop here with the reader's messages rather than deeper with vaguer ones.
+  ErrorLog log("");
+  check_scene(desc, desc.base_dir, log);
+  result.errors = log.take();
+  if (result.errors.empty()) check_memory_budget(desc, options.memory_limit, result.errors);
+  if (!result.errors.empty()) return result;
   auto scene = std::make_shared<RenderScene>();
   scene->settings = desc.render;
   scene->outlines = desc.outlines;
@@ -118,6 +161,7 @@ CompileResult compile_scene(const SceneDesc& desc) {
   for (size_t i = 0; i < scene->material_names.size(); ++i) material_index[scene->material_names[i]] = uint32_t(i);
 
   for (size_t i = 0; i < desc.objects.size(); ++i) {
+    if ((i & 255) == 0 && cancelled()) return result;
     const ObjectDesc& obj = desc.objects[i];
     if (!obj.visible) continue;
     const std::string where = "objects[" + std::to_string(i) + "] \"" + obj.name + "\": ";
@@ -132,14 +176,19 @@ CompileResult compile_scene(const SceneDesc& desc) {
       result.errors.push_back(where + error);
       continue;
     }
+    if (const std::string problem = world_extent_problem(*shape); !problem.empty()) {
+      result.errors.push_back(where + problem);
+      continue;
+    }
     scene->geometry.add(std::move(*shape));
     scene->objects.push_back(
         {obj.name, mat->second, -1, uint32_t(i), mat->second, combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines)});
   }
   if (!result.errors.empty()) return result;
   // Strokes grow on the compiled objects and join the same BVH.
-  compile_strokes(desc, *scene, result.errors);
-  if (!result.errors.empty()) return result;
+  if (cancelled()) return result;
+  compile_strokes(desc, *scene, result.errors, options.cancel);
+  if (cancelled() || !result.errors.empty()) return result;
   scene->geometry.commit();
 
   Point3 lo(0.f), hi(0.f);

@@ -81,7 +81,8 @@ bool described_object(const SceneDesc& desc, const std::string& name) {
 // Builds one emitter's strokes; nullopt when there is nothing to build or on an
 // error (appended to errors).
 std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const nlohmann::ordered_json& doc,
-                                          const RenderScene& scene, size_t index, std::vector<std::string>& errors) {
+                                          const RenderScene& scene, size_t index, std::vector<std::string>& errors,
+                                          const Cancel& cancel) {
   const StrokeEmitterDesc& e = desc.strokes[index];
   const std::string where = "strokes[" + std::to_string(index) + "] \"" + e.name + "\": ";
   if (e.count <= 0) return std::nullopt;
@@ -106,10 +107,12 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const nlohmann:
       return std::nullopt;
     }
     auto shape = std::make_shared<StrokeShape>();
-    shape->roots = place_roots(*surface, size_t(e.count), uint32_t(e.seed));
+    shape->roots = place_roots(*surface, size_t(e.count), uint32_t(e.seed), nullptr, cancel);
+    if (cancel.requested()) return std::nullopt;
     // Colours are painted in below; the ribbons are built white.
     const std::vector<Color> white(shape->roots.size(), Color(1.f));
-    shape->geometry = build_stroke_mesh(*surface, shape->roots, white, e);
+    shape->geometry = build_stroke_mesh(*surface, shape->roots, white, e, cancel);
+    if (cancel.requested()) return std::nullopt;  // unfinished ribbons are never cached
     mask->triangles_per_item = 2 * uint32_t(std::max(e.segments, 1));
     // Every stroke vertex lies within max_lift of the surface; the margin covers
     // the surface curving away from a ribbon's plane beside it.
@@ -123,15 +126,16 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const nlohmann:
 
 }  // namespace
 
-void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors) {
+void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
+                     const Cancel& cancel) {
   if (desc.strokes.empty()) return;
   const nlohmann::ordered_json doc = write_scene_document(desc);
   // Build everything before adding any: the surfaces refer to the base objects'
   // meshes, which adding shapes may move.
   std::vector<BuiltStrokes> built;
-  for (size_t i = 0; i < desc.strokes.size(); ++i)
-    if (auto b = build_emitter(desc, doc, scene, i, errors)) built.push_back(std::move(*b));
-  if (!errors.empty()) return;
+  for (size_t i = 0; i < desc.strokes.size() && !cancel.requested(); ++i)
+    if (auto b = build_emitter(desc, doc, scene, i, errors, cancel)) built.push_back(std::move(*b));
+  if (!errors.empty() || cancel.requested()) return;
   std::map<std::string, std::shared_ptr<const StrokeShape>> used;
   for (BuiltStrokes& b : built) {
     used[b.key] = b.shape;

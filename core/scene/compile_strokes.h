@@ -2,6 +2,7 @@
 // ribbon mesh in the scene's geometry, with a RenderObject and a material.
 #pragma once
 
+#include "core/base/cancel.h"
 #include "core/scene/render_scene.h"
 
 #include <string>
@@ -16,6 +17,8 @@ namespace inkray {
 // paint) and an object "<emitter>" whose `source` is the base object's, so
 // picking a stroke picks what it was painted on. Problems are appended to
 // errors as `strokes[i] "name": ...`. A scene without emitters does nothing.
-void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors);
+// Stops early, leaving the scene unfinished, once `cancel` is requested.
+void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
+                     const Cancel& cancel = {});
 
 }  // namespace inkray

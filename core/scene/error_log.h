@@ -12,26 +12,34 @@
 
 namespace inkray {
 
+// What a document is read for. Every problem that makes a document malformed
+// (syntax, a wrong type, a value out of range) stops both. A whole document can
+// still be unrenderable: a missing or unset file, a name that refers to nothing,
+// settings that contradict each other or exceed a budget. Rendering refuses it;
+// the editor opens it, shows the problems as warnings and lets the user mend them,
+// which is what makes every document the editor can save one it can open again.
+enum class ReadFor { rendering, editing };
+
 class ErrorLog {
  public:
   // A hostile file can contain millions of mistakes; past this many we only count them.
   static constexpr std::size_t kMaxLines = 100;
 
-  explicit ErrorLog(std::string_view file_label) : file_(file_label) {}
+  explicit ErrorLog(std::string_view file_label, ReadFor purpose = ReadFor::rendering)
+      : file_(file_label), purpose_(purpose) {}
 
   // `where` is a JSON path ("objects[3].material") or a text position; empty for the whole file.
   void add(std::string_view where, std::string_view message) {
     ++count_;
-    if (lines_.size() >= kMaxLines) return;
-    std::string line = file_;
-    line += ": ";
-    if (!where.empty()) {
-      line += where;
-      line += ": ";
-    }
-    line += message;
-    lines_.push_back(std::move(line));
+    if (lines_.size() < kMaxLines) lines_.push_back(line(where, message));
   }
+
+  // A problem that stops rendering but not editing (see ReadFor).
+  void add_unrenderable(std::string_view where, std::string_view message) {
+    if (purpose_ == ReadFor::rendering) return add(where, message);
+    if (warnings_.size() < kMaxLines) warnings_.push_back(line(where, message));
+  }
+  std::vector<std::string> take_warnings() { return std::move(warnings_); }
 
   std::size_t count() const { return count_; }
   bool empty() const { return count_ == 0; }
@@ -48,8 +56,20 @@ class ErrorLog {
   }
 
  private:
+  std::string line(std::string_view where, std::string_view message) const {
+    std::string out = file_;
+    if (!out.empty()) out += ": ";
+    if (!where.empty()) {
+      out += where;
+      out += ": ";
+    }
+    out += message;
+    return out;
+  }
+
   std::string file_;
-  std::vector<std::string> lines_;
+  ReadFor purpose_;
+  std::vector<std::string> lines_, warnings_;
   std::size_t count_ = 0;
 };
 

@@ -1,7 +1,8 @@
-// Scene file input and output: reading files without throwing, and saving through a
-// temporary file and rename so an interrupted save never destroys the previous scene.
+// Scene file input and output: reading files without throwing, and saving through
+// core/io's atomic replacement so an interrupted save never destroys the previous scene.
 #include "core/scene/json_io.h"
 
+#include "core/io/atomic_file.h"
 #include "core/scene/asset_paths.h"
 #include "core/scene/error_log.h"
 #include "core/scene/json_read.h"
@@ -10,18 +11,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include <atomic>
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <exception>
-#include <functional>
 #include <new>
 #include <system_error>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace inkray {
 namespace fs = std::filesystem;
@@ -74,54 +68,19 @@ bool read_text_file(const fs::path& file, std::string& text, std::string& reason
   return true;
 }
 
-std::string temporary_suffix() {
-  static std::atomic<unsigned> counter{0};
-  const auto now = std::chrono::steady_clock::now().time_since_epoch().count();
-  std::size_t h = std::hash<long long>{}(static_cast<long long>(now));
-  h ^= std::hash<unsigned>{}(counter.fetch_add(1) + 0x9e3779b9u * static_cast<unsigned>(::getpid())) +
-       0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string suffix(6, '0');
-  for (char& c : suffix) {
-    c = kHex[h & 15];
-    h >>= 4;
-  }
-  return suffix;
-}
-
-bool write_all(int fd, std::string_view data) {
-  while (!data.empty()) {
-    const ssize_t n = ::write(fd, data.data(), data.size());
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    data.remove_prefix(static_cast<std::size_t>(n));
-  }
-  return true;
-}
-
-// Makes the rename itself durable; failure only weakens durability, so it is ignored.
-void sync_directory(const fs::path& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
 }  // namespace
 
 SceneLoadResult parse_scene(std::string_view json_text, const fs::path& base_dir,
-                            std::string_view file_label) {
+                            std::string_view file_label, ReadFor purpose, const Cancel& cancel) {
   SceneLoadResult result;
-  ErrorLog log(file_label);
+  ErrorLog log(file_label, purpose);
   try {
     if (json_text.size() > kMaxSceneFileBytes) {
       log.add("", "the text is " + std::to_string(json_text.size()) + " bytes; a scene may be at most " +
                       std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
-    } else if (std::optional<nlohmann::json> doc = parse_json_document(json_text, log)) {
+    } else if (std::optional<nlohmann::json> doc = parse_json_document(json_text, log, cancel)) {
       SceneDesc scene;
-      read_scene_document(*doc, base_dir, scene, log);
+      read_scene_document(*doc, base_dir, scene, log, cancel);
       scene.base_dir = base_dir;
       if (log.empty()) result.scene = std::move(scene);
     }
@@ -132,24 +91,26 @@ SceneLoadResult parse_scene(std::string_view json_text, const fs::path& base_dir
   } catch (...) {
     log.add("", "internal error while reading the scene");
   }
+  result.cancelled = !log.empty() && cancel.requested();
   result.errors = log.take();
+  result.warnings = log.take_warnings();
   if (!result.errors.empty()) result.scene.reset();
   return result;
 }
 
-SceneLoadResult load_scene(const fs::path& file) {
+SceneLoadResult load_scene(const fs::path& file, ReadFor purpose, const Cancel& cancel) {
   const std::string label = file.string();
   try {
     std::string text, reason;
-    if (!read_text_file(file, text, reason)) return {std::nullopt, {label + ": " + reason}};
+    if (!read_text_file(file, text, reason)) return {std::nullopt, {label + ": " + reason}, {}, false};
     std::error_code ec;
     fs::path dir = fs::absolute(file, ec).parent_path();
     if (ec) dir = file.parent_path();
-    return parse_scene(text, dir.lexically_normal(), label);
+    return parse_scene(text, dir.lexically_normal(), label, purpose, cancel);
   } catch (const std::exception& e) {
-    return {std::nullopt, {label + ": cannot read the scene file: " + e.what()}};
+    return {std::nullopt, {label + ": cannot read the scene file: " + e.what()}, {}, false};
   } catch (...) {
-    return {std::nullopt, {label + ": cannot read the scene file"}};
+    return {std::nullopt, {label + ": cannot read the scene file"}, {}, false};
   }
 }
 
@@ -158,54 +119,16 @@ nlohmann::json scene_to_json(const SceneDesc& scene) { return nlohmann::json(wri
 std::string scene_to_string(const SceneDesc& scene) { return format_scene_json(write_scene_document(scene)); }
 
 bool save_scene(const SceneDesc& scene, const fs::path& file, std::string* error) {
-  const auto fail = [&](const std::string& reason) {
-    if (error) *error = "cannot save " + file.string() + ": " + reason;
-    return false;
-  };
   std::string text;
-  fs::path target = file;
   try {
     text = scene_to_string(scene);
-    // Saving through a symlink replaces the file it points to, not the link.
-    std::error_code ec;
-    if (fs::is_symlink(fs::symlink_status(file, ec))) {
-      const fs::path resolved = fs::canonical(file, ec);
-      if (!ec) target = resolved;
-    }
   } catch (const std::exception& e) {
-    return fail(e.what());
+    if (error) *error = "cannot save " + file.string() + ": " + e.what();
+    return false;
   }
-
-  std::string temporary;
-  int fd = -1;
-  for (int attempt = 0; attempt < 64 && fd < 0; ++attempt) {
-    temporary = target.string() + ".tmp-" + temporary_suffix();
-    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0 && errno != EEXIST) return fail("cannot create " + temporary + ": " + errno_text(errno));
-  }
-  if (fd < 0) return fail("cannot create a temporary file next to it");
-
-  // Keep the permissions of the file being replaced.
-  struct stat existing;
-  if (::stat(target.c_str(), &existing) == 0 && S_ISREG(existing.st_mode)) {
-    ::fchmod(fd, existing.st_mode & 07777);
-  }
-
-  const auto abandon = [&](const std::string& what) {
-    const std::string reason = what + ": " + errno_text(errno);
-    if (fd >= 0) ::close(fd);
-    ::unlink(temporary.c_str());
-    return fail(reason);
-  };
-  if (!write_all(fd, text)) return abandon("cannot write " + temporary);
-  if (::fsync(fd) != 0) return abandon("cannot flush " + temporary);
-  const int closed = ::close(fd);
-  fd = -1;
-  if (closed != 0) return abandon("cannot close " + temporary);
-  if (::rename(temporary.c_str(), target.c_str()) != 0) return abandon("cannot rename " + temporary);
-  const fs::path dir = target.parent_path();
-  sync_directory(dir.empty() ? fs::path(".") : dir);
-  return true;
+  // A save killed mid-write left its temporary; this is the moment someone is looking.
+  remove_stale_temporaries(file);
+  return write_file_atomically(file, text, error);
 }
 
 bool save_scene_as(const SceneDesc& scene, const fs::path& file, std::string* error) {

@@ -3,6 +3,7 @@
 // widgets. Checks that span the document (names, references, files) are in scene_checks.
 #include "core/scene/json_read.h"
 
+#include "core/scene/json_syntax.h"
 #include "core/scene/scene_checks.h"
 #include "core/scene/tagged_variant.h"
 
@@ -168,8 +169,13 @@ bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string&
 bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, std::string& out) {
   // "" for an optional name or path means unset, as an absent key does: files written
   // before the writer left unset values out say "ramp_image": "" and must still open.
-  if (!p.required && j.is_string() && j.get_ref<const std::string&>().empty()) {
+  // For a required one (a texture's file, a mix's material) the document is whole but
+  // cannot render until it is set: the editor writes that while the user chooses.
+  if (j.is_string() && j.get_ref<const std::string&>().empty()) {
     out.clear();
+    if (p.required && p.kind != ParamKind::path) {  // check_scene reports unset required paths
+      log.add_unrenderable(at, "expected a non-empty string, got \"\"");
+    }
     return true;
   }
   if (!j.is_string() || j.get_ref<const std::string&>().empty()) {
@@ -404,21 +410,27 @@ void read_object(ErrorLog& log, const Json& j, ObjectDesc& o, const std::string&
   check_keys(log, j, at, allowed);
 }
 
+// False when cancelled.
 template <class Item, class ReadItem>
-void read_list(ErrorLog& log, const Json& doc, std::string_view key, std::vector<Item>& items,
-               ReadItem read_item) {
+bool read_list(ErrorLog& log, const Json& doc, std::string_view key, std::vector<Item>& items,
+               ReadItem read_item, const Cancel& cancel) {
   const auto it = doc.find(std::string(key));
-  if (it == doc.end()) return;
+  if (it == doc.end()) return true;
   if (!it->is_array()) {
     log.add(key, "expected an array, got " + describe(*it));
-    return;
+    return true;
   }
   items.reserve(it->size());
   for (std::size_t i = 0; i < it->size(); ++i) {
+    if ((i & 1023) == 1023 && cancel.requested()) {
+      log.add("", kCancelledReading);
+      return false;
+    }
     Item item;
     read_item(log, (*it)[i], item, element_path(key, i));
     items.push_back(std::move(item));  // even when broken, so indices in messages match the file
   }
+  return true;
 }
 
 void read_header(ErrorLog& log, const Json& doc) {
@@ -444,7 +456,7 @@ void read_header(ErrorLog& log, const Json& doc) {
 }  // namespace
 
 void read_scene_document(const nlohmann::json& doc, const std::filesystem::path& base_dir, SceneDesc& scene,
-                         ErrorLog& log) {
+                         ErrorLog& log, const Cancel& cancel) {
   if (!doc.is_object()) {
     log.add("", "expected a JSON object at the top level, got " + describe(doc));
     return;
@@ -457,12 +469,15 @@ void read_scene_document(const nlohmann::json& doc, const std::filesystem::path&
   if (const auto it = doc.find("environment"); it != doc.end()) {
     read_tagged_object(log, *it, scene.environment, "environment", "environment");
   }
-  read_list(log, doc, "materials", scene.materials, read_material);
-  read_list(log, doc, "objects", scene.objects, read_object);
-  read_list(log, doc, "lights", scene.lights, read_light);
+  if (!read_list(log, doc, "materials", scene.materials, read_material, cancel) ||
+      !read_list(log, doc, "objects", scene.objects, read_object, cancel) ||
+      !read_list(log, doc, "lights", scene.lights, read_light, cancel))
+    return;
   if (const auto it = doc.find("outlines"); it != doc.end()) read_struct(log, *it, scene.outlines, "outlines");
-  read_list(log, doc, "strokes", scene.strokes,
-            [](ErrorLog& l, const Json& j, StrokeEmitterDesc& e, const std::string& at) { read_struct(l, j, e, at); });
+  const auto read_emitter = [](ErrorLog& l, const Json& j, StrokeEmitterDesc& e, const std::string& at) {
+    read_struct(l, j, e, at);
+  };
+  if (!read_list(log, doc, "strokes", scene.strokes, read_emitter, cancel)) return;
 
   name_unnamed(scene);
   check_scene(scene, base_dir, log);

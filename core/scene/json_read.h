@@ -3,6 +3,7 @@
 // Every problem goes to the log; none stops the reading.
 #pragma once
 
+#include "core/base/cancel.h"
 #include "core/scene/desc.h"
 #include "core/scene/error_log.h"
 
@@ -14,7 +15,8 @@ namespace inkray {
 
 // Finishes with name_unnamed and check_scene (scene_checks.h): asset paths are checked
 // to name regular files relative to base_dir.
+// Stops between list items once `cancel` is requested, logging kCancelledReading.
 void read_scene_document(const nlohmann::json& doc, const std::filesystem::path& base_dir, SceneDesc& scene,
-                         ErrorLog& log);
+                         ErrorLog& log, const Cancel& cancel = {});
 
 }  // namespace inkray

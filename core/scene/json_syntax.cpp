@@ -37,7 +37,7 @@ std::string strip_exception_prefix(std::string_view what) {
 
 class DomBuilder final : public nlohmann::json_sax<Json> {
  public:
-  DomBuilder(std::string_view text, ErrorLog& log) : text_(text), log_(log) {}
+  DomBuilder(std::string_view text, ErrorLog& log, const Cancel& cancel) : text_(text), log_(log), cancel_(cancel) {}
 
   Json take_root() { return std::move(root_); }
 
@@ -94,6 +94,10 @@ class DomBuilder final : public nlohmann::json_sax<Json> {
   }
 
   bool open(Json&& container) {
+    if ((++containers_ & 4095) == 0 && cancel_.requested()) {
+      log_.add("", kCancelledReading);
+      return false;
+    }
     if (frames_.size() >= kMaxJsonDepth) {
       log_.add(container_path(),
                "values are nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
@@ -140,18 +144,20 @@ class DomBuilder final : public nlohmann::json_sax<Json> {
 
   std::string_view text_;
   ErrorLog& log_;
+  const Cancel& cancel_;
+  std::size_t containers_ = 0;
   Json root_;
   std::vector<Frame> frames_;
 };
 
 }  // namespace
 
-std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log) {
+std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log, const Cancel& cancel) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     log.add("", "the file is empty (expected a JSON object)");
     return std::nullopt;
   }
-  DomBuilder builder(text, log);
+  DomBuilder builder(text, log, cancel);
   const bool ok = Json::sax_parse(text.begin(), text.end(), &builder, Json::input_format_t::json,
                                   /*strict=*/true, /*ignore_comments=*/false);
   if (!ok) return std::nullopt;

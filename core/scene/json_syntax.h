@@ -3,6 +3,7 @@
 // bounded so a hostile file cannot exhaust the stack.
 #pragma once
 
+#include "core/base/cancel.h"
 #include "core/scene/error_log.h"
 
 #include <nlohmann/json.hpp>
@@ -18,6 +19,10 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 
 // The document, or nullopt after an error that stops parsing (logged). Duplicate keys
 // are logged without stopping, so the reader can report the file's other problems too.
-std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log);
+// A 60 MB scene takes seconds to parse: `cancel` is checked every few thousand values
+// and stops it with kCancelledReading logged.
+std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log, const Cancel& cancel = {});
+
+inline constexpr std::string_view kCancelledReading = "cancelled while reading the scene";
 
 }  // namespace inkray

@@ -26,6 +26,11 @@ enum class ParamKind {
   group,      // a nested struct with its own visit_params (a JSON object)
 };
 
+// Every position, offset and edge vector stays within this distance of the origin.
+// Embree's rays accept origins up to about 1.8e18 (beyond, Debian's build aborts);
+// compile_scene bounds the transformed geometry far below that (kMaxWorldCoordinate).
+inline constexpr double kMaxCoordinate = 1e9;
+
 struct Param {
   std::string_view name;
   std::string_view doc;
@@ -44,9 +49,13 @@ constexpr Param integer(std::string_view name, double min, double max, std::stri
   return {name, doc, ParamKind::integer, min, max};
 }
 constexpr Param toggle(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::toggle}; }
-constexpr Param point(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::point}; }
+constexpr Param point(std::string_view name, std::string_view doc) {
+  return {name, doc, ParamKind::point, -kMaxCoordinate, kMaxCoordinate};
+}
 constexpr Param direction(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::direction}; }
-constexpr Param vector(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::vector}; }
+constexpr Param vector(std::string_view name, std::string_view doc) {
+  return {name, doc, ParamKind::vector, -kMaxCoordinate, kMaxCoordinate};
+}
 constexpr Param color(std::string_view name, double max, std::string_view doc) {
   return {name, doc, ParamKind::color, 0.0, max};
 }

@@ -22,20 +22,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct AssetRef {
-  std::string at;       // JSON path of the key
-  std::string written;  // the path as written
-};
-
 // Collects ParamKind::path fields, descending into colour inputs' textures.
 struct AssetCollector {
   std::string at;
   std::vector<AssetRef>& out;
+  AssetKind kind = AssetKind::image;
 
   template <class T>
   void operator()(const Param& p, T& field) {
     if constexpr (std::is_same_v<T, std::string>) {
-      if (p.kind == ParamKind::path) out.push_back({child_path(at, p.name), field});
+      if (p.kind == ParamKind::path) out.push_back({child_path(at, p.name), field, kind, p.required});
     } else if constexpr (std::is_same_v<T, ColorInput>) {
       collect_tagged(child_path(at, p.name), field, out);
     }
@@ -47,13 +43,15 @@ struct AssetCollector {
         [&]<class A>(const A& alternative) {
           if constexpr (Tagged<A>) {
             A copy = alternative;  // visit_params takes a mutable struct
-            AssetCollector collector{path, out};
+            AssetCollector collector{path, out, std::is_same_v<A, MeshDesc> ? AssetKind::mesh : AssetKind::image};
             visit_params(copy, collector);
           }
         },
         value);
   }
 };
+
+}  // namespace
 
 std::vector<AssetRef> collect_assets(const SceneDesc& scene) {
   std::vector<AssetRef> assets;
@@ -71,15 +69,21 @@ std::vector<AssetRef> collect_assets(const SceneDesc& scene) {
   for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
     if (scene.strokes[i].brush != BrushKind::image) continue;
     StrokeEmitterDesc copy = scene.strokes[i];
-    AssetCollector collector{element_path("strokes", i), assets};
+    AssetCollector collector{element_path("strokes", i), assets, AssetKind::brush};
     visit_params(copy, collector);
   }
   return assets;
 }
 
+namespace {
+
 void check_assets(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log) {
-  for (const auto& [at, written] : collect_assets(scene)) {
-    if (written.empty()) continue;  // reported by the reader as a missing or invalid value
+  for (const auto& [at, written, kind, required] : collect_assets(scene)) {
+    if (written.empty()) {
+      // An image texture or mesh the editor has just added, before a file is chosen.
+      if (required) log.add_unrenderable(at, "no file given (expected a path relative to the scene file)");
+      continue;
+    }
     // The OS would see only the part before a NUL, so the file checked would not be the file named.
     if (written.find('\0') != std::string::npos) {
       log.add(at, "expected a file path without NUL characters, got " + in_quotes(written));
@@ -92,7 +96,7 @@ void check_assets(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& lo
     fs::path shown = fs::absolute(resolved, ec);
     shown = ec ? resolved : shown.lexically_normal();
     const std::string problem = fs::exists(status) ? "not a regular file: " : "file not found: ";
-    log.add(at, problem + written + " (resolved to " + shown.string() + ")");
+    log.add_unrenderable(at, problem + written + " (resolved to " + shown.string() + ")");
   }
 }
 
@@ -104,7 +108,7 @@ void check_unique_names(const std::vector<Item>& items, std::string_view section
     if (items[i].name.empty()) continue;  // reported by the reader as missing or invalid
     const auto [it, inserted] = first_use.emplace(items[i].name, i);
     if (!inserted) {
-      log.add(element_path(section, i) + ".name", "duplicate " + std::string(noun) + " name " +
+      log.add_unrenderable(element_path(section, i) + ".name", "duplicate " + std::string(noun) + " name " +
                                                       in_quotes(items[i].name) + " (also used by " +
                                                       element_path(section, it->second) + ")");
     }
@@ -137,7 +141,7 @@ void check_material_references(const SceneDesc& scene, ErrorLog& log) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const std::string& name = scene.objects[i].material;
     if (!name.empty() && !names.contains(name)) {
-      log.add(element_path("objects", i) + ".material", "no material named " + in_quotes(name) + known);
+      log.add_unrenderable(element_path("objects", i) + ".material", "no material named " + in_quotes(name) + known);
     }
   }
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
@@ -145,7 +149,7 @@ void check_material_references(const SceneDesc& scene, ErrorLog& log) {
     if (!mix) continue;
     for (const auto& [key, name] : {std::pair{".a", &mix->a}, std::pair{".b", &mix->b}}) {
       if (!name->empty() && !names.contains(*name))
-        log.add(element_path("materials", i) + key, "no material named " + in_quotes(*name) + known);
+        log.add_unrenderable(element_path("materials", i) + key, "no material named " + in_quotes(*name) + known);
     }
   }
 }
@@ -203,14 +207,14 @@ void check_mix_cycles(const SceneDesc& scene, ErrorLog& log) {
       if (state[std::size_t(target)] != open) continue;
       const std::string at = element_path("materials", std::size_t(node)) + (side == 0 ? ".a" : ".b");
       if (target == node) {
-        log.add(at, "mix " + in_quotes(scene.materials[std::size_t(node)].name) + " refers to itself");
+        log.add_unrenderable(at, "mix " + in_quotes(scene.materials[std::size_t(node)].name) + " refers to itself");
         continue;
       }
       std::string chain;
       auto from = std::find_if(stack.begin(), stack.end(), [&](const Frame& f) { return f.node == target; });
       for (; from != stack.end(); ++from)
         chain += in_quotes(scene.materials[std::size_t(from->node)].name) + " -> ";
-      log.add(at, "mixes refer to each other in a cycle: " + chain +
+      log.add_unrenderable(at, "mixes refer to each other in a cycle: " + chain +
                       in_quotes(scene.materials[std::size_t(target)].name));
     }
   }
@@ -229,15 +233,27 @@ void check_strokes(const SceneDesc& scene, ErrorLog& log) {
     const StrokeEmitterDesc& e = scene.strokes[i];
     const std::string at = element_path("strokes", i);
     if (!e.object.empty() && !objects.contains(e.object))
-      log.add(at + ".object", "no object named " + in_quotes(e.object) + known);
+      log.add_unrenderable(at + ".object", "no object named " + in_quotes(e.object) + known);
     if (e.brush == BrushKind::image && e.brush_image.empty())
-      log.add(at + ".brush_image", "required when brush is \"image\"");
+      log.add_unrenderable(at + ".brush_image", "required when brush is \"image\"");
     if (e.width_min > e.width_max)
-      log.add(at + ".width_min",
+      log.add_unrenderable(at + ".width_min",
               "must not exceed width_max (" + shown(e.width_min) + " > " + shown(e.width_max) + ")");
     if (e.length_min > e.length_max)
-      log.add(at + ".length_min",
+      log.add_unrenderable(at + ".length_min",
               "must not exceed length_max (" + shown(e.length_min) + " > " + shown(e.length_max) + ")");
+  }
+  // One budget across emitters: each may be modest and all of them together not.
+  long long vertices = 0;
+  for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
+    vertices += stroke_vertex_count(scene.strokes[i]);
+    if (vertices > kMaxStrokeVertices) {
+      log.add_unrenderable(element_path("strokes", i) + ".count",
+              "the strokes up to this emitter need " + std::to_string(vertices) +
+                  " vertices (count x 2 x (segments + 1), summed over emitters); a scene may have at most " +
+                  std::to_string(kMaxStrokeVertices) + " (about 6 GiB of memory)");
+      break;
+    }
   }
 }
 
@@ -269,21 +285,21 @@ void check_degenerate_directions(const SceneDesc& scene, ErrorLog& log) {
   const CameraDesc& c = scene.camera;
   const Vec3 view = c.look_at - c.look_from;
   if (glm::length(view) == 0.f) {
-    log.add("camera.look_at", "must differ from camera.look_from (the view has no direction)");
+    log.add_unrenderable("camera.look_at", "must differ from camera.look_from (the view has no direction)");
   } else if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-6f) {
-    log.add("camera.up", "must not be parallel to the view direction (look_at - look_from)");
+    log.add_unrenderable("camera.up", "must not be parallel to the view direction (look_at - look_from)");
   }
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const auto* spot = std::get_if<SpotLightDesc>(&scene.lights[i].data);
     if (spot && glm::length(spot->target - spot->position) == 0.f)
-      log.add("lights[" + std::to_string(i) + "].target", "must differ from the spot light's position");
+      log.add_unrenderable("lights[" + std::to_string(i) + "].target", "must differ from the spot light's position");
   }
 }
 
 void check_scene(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log) {
   const long long pixels = static_cast<long long>(scene.render.width) * scene.render.height;
   if (pixels > kMaxImagePixels) {
-    log.add("render", "image size " + std::to_string(scene.render.width) + " x " +
+    log.add_unrenderable("render", "image size " + std::to_string(scene.render.width) + " x " +
                           std::to_string(scene.render.height) + " = " + std::to_string(pixels) +
                           " pixels is over the limit of " + std::to_string(kMaxImagePixels) +
                           " (8192 x 8192)");

@@ -3,11 +3,20 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace inkray {
 namespace {
@@ -60,6 +69,53 @@ TEST_F(InkrayRender, WriteSceneSavesWhatTheEditorSavesAndItOpensAgain) {
   r = run_render(scene("toon.json") + " --write-scene " + (dir_ / "no" / "such" / "t.json").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("t.json"), std::string::npos) << r.output;
+}
+
+// --time bounds the whole run: a scene that takes longer to build than the limit is an
+// error that writes nothing, not a render that overruns by minutes.
+TEST_F(InkrayRender, TimeLimitCoversBuildingTheScene) {
+  const auto file = dir_ / "heavy.json";
+  std::ofstream(file) << R"({"format": "inkray-scene", "version": 1,
+    "render": {"width": 32, "height": 24},
+    "materials": [{"name": "m", "type": "diffuse"}],
+    "objects": [{"name": "ball", "material": "m", "shape": {"type": "sphere"}}],
+    "strokes": [{"name": "paint", "object": "ball", "count": 1500000, "seed": 77}]})";
+  const auto out = dir_ / "heavy.png";
+  const RunResult r = run_render(file.string() + " -o " + out.string() + " --time 0.3 -q");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("heavy.json: the time limit of 0.3 s ran out while building the scene"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// The anisotropic Kuwahara filter at radius 64 on a 1080p image takes minutes: with a
+// time limit the render says so at once instead of overrunning it.
+TEST_F(InkrayRender, TimeLimitLeavesRoomForThePainterlyFilter) {
+  const auto file = dir_ / "filter.json";
+  std::ofstream(file) << R"({"format": "inkray-scene", "version": 1,
+    "render": {"width": 1920, "height": 1080, "painterly": "anisotropic", "painterly_radius": 64},
+    "materials": [{"name": "m", "type": "diffuse"}],
+    "objects": [{"name": "ball", "material": "m", "shape": {"type": "sphere"}}]})";
+  const auto out = dir_ / "filter.png";
+  RunResult r = run_render(file.string() + " -o " + out.string() + " --time 2 -q");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("filter.json: the painterly filter alone takes about"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  // Smaller, the same filter fits, and the image is written.
+  r = run_render(file.string() + " -o " + out.string() + " --time 4 --width 96 --height 54 -q");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+TEST_F(InkrayRender, MemoryLimitRefusesAScenePredictedToExceedIt) {
+  const auto out = dir_ / "m.png";
+  RunResult r = run_render(scene("strokes_100k.json") + " -o " + out.string() + " --memory-limit 16M -q");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("more than the limit of 16 MiB"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  r = run_render(scene("cornell.json") + " -o " + out.string() + " --memory-limit lots");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--memory-limit: expected a size such as 8G"), std::string::npos) << r.output;
 }
 
 TEST_F(InkrayRender, RendersImageAndAovsAndPrintsErrorTable) {
@@ -125,8 +181,112 @@ TEST_F(InkrayRender, SceneErrorsNameTheFileAndWriteNothing) {
 TEST_F(InkrayRender, HelpDocumentsEveryOption) {
   const RunResult r = run_render("--help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* opt : {"--output", "--spp", "--time", "--threads", "--width", "--height", "--seed", "--aov", "--write-scene"})
+  for (const char* opt : {"--output", "--spp", "--time", "--threads", "--width", "--height", "--seed", "--aov", "--write-scene", "--memory-limit"})
     EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
+}
+
+// ---------------------------------------------------------------- outputs never lose data
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> entries_of(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST_F(InkrayRender, TheSameFileTwiceIsRefusedBeforeRendering) {
+  const auto out = dir_ / "out.png";
+  std::ofstream(out) << "an earlier render";
+  std::filesystem::create_symlink("out.png", dir_ / "link.png");
+  for (const std::string& aov :
+       {out.string(), (dir_ / "." / "out.png").string(), (dir_ / "link.png").string()}) {
+    const RunResult r = run_render(scene("cornell.json") + " -o " + out.string() + " --aov depth=" + aov +
+                                   " --spp 1 --width 8 --height 8");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--aov depth=" + aov + ": the same file as -o " + out.string()),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(file_text(out), "an earlier render");
+  }
+}
+
+TEST_F(InkrayRender, UnwritableAovIsRefusedBeforeRenderingAndNoImageIsWritten) {
+  std::filesystem::create_directory(dir_ / "taken.exr");
+  std::ofstream(dir_ / "file") << "";
+  const auto out = dir_ / "out.png";
+  struct Case {
+    std::filesystem::path aov;
+    std::string problem;
+  };
+  for (const Case& c :
+       {Case{dir_ / "missing" / "d.exr", "folder " + (dir_ / "missing").string() + " does not exist"},
+        Case{dir_ / "taken.exr", (dir_ / "taken.exr").string() + " is a folder"},
+        Case{dir_ / "file" / "d.exr", (dir_ / "file").string() + " is not a folder"}}) {
+    const RunResult r = run_render(scene("cornell.json") + " -o " + out.string() +
+                                   " --aov depth=" + c.aov.string() + " --spp 1 --width 8 --height 8");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--aov depth=" + c.aov.string() + ": " + c.problem), std::string::npos)
+        << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+}
+
+// The AOV's folder passes the check and is removed while the render runs: the write
+// fails after rendering, and the image, already encoded, must not land without it.
+TEST_F(InkrayRender, AovFolderGoneAfterTheRenderLeavesNoImage) {
+  std::filesystem::create_directory(dir_ / "aovs");
+  const std::string binary = std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render";
+  const std::string log = (dir_ / "log.txt").string(), out = (dir_ / "out.png").string();
+  const std::string aov = "depth=" + (dir_ / "aovs" / "d.exr").string(), cornell = scene("cornell.json");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 1);
+    ::dup2(fd, 2);
+    ::execl(binary.c_str(), binary.c_str(), cornell.c_str(), "-o", out.c_str(), "--aov", aov.c_str(), "--spp",
+            "1048576", "--time", "2", "--width", "32", "--height", "32", "--threads", "2", "-q",
+            (char*)nullptr);
+    ::_exit(127);
+  }
+  // Worker threads exist only after the arguments (and output paths) were checked.
+  const std::filesystem::path tasks = "/proc/" + std::to_string(child) + "/task";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  std::error_code ec;
+  while (std::distance(std::filesystem::directory_iterator(tasks, ec), {}) < 2 &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  std::filesystem::remove_all(dir_ / "aovs");
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  const std::string output = file_text(log);
+  ASSERT_TRUE(WIFEXITED(status)) << output;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  EXPECT_NE(output.find("cannot write " + (dir_ / "aovs" / "d.exr").string()), std::string::npos) << output;
+  EXPECT_NE(output.find("No such file or directory"), std::string::npos) << output;
+  EXPECT_EQ(entries_of(dir_), std::vector<std::string>{"log.txt"});  // no image, no temporary
+}
+
+TEST_F(InkrayRender, OutputThroughASymlinkReplacesItsTarget) {
+  std::ofstream(dir_ / "real.png") << "an earlier render";
+  std::filesystem::create_symlink("real.png", dir_ / "link.png");
+  const RunResult r = run_render(scene("cornell.json") + " -o " + (dir_ / "link.png").string() +
+                                 " --spp 1 --width 8 --height 8 -q");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::is_symlink(dir_ / "link.png"));
+  RgbImage img;
+  std::string error;
+  ASSERT_TRUE(read_image(dir_ / "real.png", true, &img, &error)) << error;
+  EXPECT_EQ(img.width, 8);
+  EXPECT_EQ(entries_of(dir_), (std::vector<std::string>{"link.png", "real.png"}));
 }
 
 }  // namespace

@@ -93,5 +93,27 @@ TEST(ExportJob, UnwritablePathReportsTheFile) {
   fs::remove_all(dir);
 }
 
+// The image and its AOVs are written together: an AOV that cannot be written means no
+// image either, found before rendering.
+TEST(ExportJob, AFailedAovLeavesNoImage) {
+  const fs::path dir = fresh_dir("aov");
+  ExportRequest r;
+  r.scene = tiny_cornell();
+  r.output = dir / "out.png";
+  r.spp = 1;
+  r.threads = 1;
+  r.aovs = {Aov::albedo, Aov::depth};
+  const fs::path depth = ExportJob::aov_path(r.output, Aov::depth);
+  fs::create_directory(depth);  // a folder where the depth AOV should go
+  ExportJob job(r);
+  wait_done(job);
+  EXPECT_NE(job.error().find(depth.string()), std::string::npos) << job.error();
+  EXPECT_TRUE(job.written().empty());
+  EXPECT_FALSE(fs::exists(r.output));
+  EXPECT_FALSE(fs::exists(ExportJob::aov_path(r.output, Aov::albedo)));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), {}), 1);  // the folder only, no temporaries
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace inkray

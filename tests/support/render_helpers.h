@@ -16,6 +16,17 @@ inline SceneDesc small_scene(int width, int height) {
   return d;
 }
 
+// A unit sphere "ball" of material "m": a scene to hang one feature on.
+inline SceneDesc one_sphere_scene(int width, int height) {
+  SceneDesc d = small_scene(width, height);
+  d.materials = {{"m", DiffuseDesc{}, {}}};
+  ObjectDesc o;
+  o.name = "ball";
+  o.material = "m";
+  d.objects = {o};
+  return d;
+}
+
 inline RgbImage render_scene(const SceneDesc& desc, int spp, int threads = 2, RenderStats* stats = nullptr) {
   const CompileResult c = compile_scene(desc);
   EXPECT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());

@@ -108,7 +108,8 @@ float stroke_offset(const StrokeSurface& surface, const StrokeEmitterDesc& e) {
 }
 
 StrokeGeometry build_stroke_mesh(const StrokeSurface& surface, std::span<const SurfacePoint> roots,
-                                 std::span<const Color> colors, const StrokeEmitterDesc& emitter) {
+                                 std::span<const Color> colors, const StrokeEmitterDesc& emitter,
+                                 const Cancel& cancel) {
   StrokeGeometry out;
   out.offset = stroke_offset(surface, emitter);
   const size_t count = roots.size();
@@ -131,7 +132,7 @@ StrokeGeometry build_stroke_mesh(const StrokeSurface& surface, std::span<const S
     float seen = max_lift.load();
     while (local > seen && !max_lift.compare_exchange_weak(seen, local)) {
     }
-  });
+  }, cancel);
   out.max_lift = max_lift.load();
   return out;
 }

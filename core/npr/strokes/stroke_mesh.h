@@ -2,6 +2,8 @@
 // the surface so no ribbon touches or crosses the surface it lies on.
 #pragma once
 
+#include "core/base/cancel.h"
+
 #include "core/geometry/triangle_mesh.h"
 #include "core/npr/strokes/stroke_surface.h"
 #include "core/scene/npr_desc.h"
@@ -30,8 +32,10 @@ float stroke_offset(const StrokeSurface& surface, const StrokeEmitterDesc& emitt
 // thread count) and builds the ribbons. colors[i] is stroke i's vertex colour.
 // Each vertex lies at its projection onto the surface plus a lift along the
 // normal: the offset scaled by the stroke's layer (1 to 2 times), plus the
-// deepest a chord between neighbouring vertices can dip below the surface.
+// deepest a chord between neighbouring vertices can dip below the surface. Once
+// `cancel` is requested the ribbons are left unfinished (the caller discards them).
 StrokeGeometry build_stroke_mesh(const StrokeSurface& surface, std::span<const SurfacePoint> roots,
-                                 std::span<const Color> colors, const StrokeEmitterDesc& emitter);
+                                 std::span<const Color> colors, const StrokeEmitterDesc& emitter,
+                                 const Cancel& cancel = {});
 
 }  // namespace inkray

@@ -95,14 +95,14 @@ class HashGrid {
 }  // namespace
 
 std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count, uint32_t seed,
-                                      PlacementStats* stats) {
+                                      PlacementStats* stats, const Cancel& cancel) {
   if (count == 0) return {};
   const uint32_t stream = hash_combine(seed, kPlacementStream);
   const size_t m = candidate_count(count);
   std::vector<Point3> candidates(m);
   parallel_chunks(m, 16384, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) candidates[i] = surface.sample(stream, uint32_t(i)).p;
-  });
+  }, cancel);
 
   const double spacing = std::sqrt(surface.area() / double(count));
   const float r0 = float(spacing);  // above what random darts reach (about 0.8 x spacing)
@@ -115,9 +115,11 @@ std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count
   accepted.reserve(count);
   float r = r0;
   while (accepted.size() < count) {
+    if (cancel.requested()) return {};
     // Once the radius is negligible, the remaining candidates are taken in order.
     const bool take_all = r < 1e-3f * r0;
     for (size_t i = 0; i < m && accepted.size() < count; ++i) {
+      if ((i & 0xffff) == 0 && cancel.requested()) return {};
       if (nearest[i] < 0.f || (!take_all && nearest[i] < r)) continue;
       if (!take_all) {
         const float d = grid.nearest(candidates[i], r);
@@ -136,7 +138,8 @@ std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count
   std::vector<SurfacePoint> roots(count);
   parallel_chunks(count, 8192, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) roots[i] = surface.sample(stream, accepted[i]);
-  });
+  }, cancel);
+  if (cancel.requested()) return {};
   if (stats) *stats = {spacing, double(r < 1e-3f * r0 ? 0.f : r), m};
   return roots;
 }

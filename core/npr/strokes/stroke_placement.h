@@ -2,6 +2,8 @@
 // with blue-noise spacing so strokes neither clump nor leave holes.
 #pragma once
 
+#include "core/base/cancel.h"
+
 #include "core/npr/strokes/stroke_surface.h"
 
 #include <vector>
@@ -20,8 +22,9 @@ struct PlacementStats {
 // until `count` roots are accepted, so the spacing is close to the largest the
 // candidates allow. A hash grid finds neighbours; a rejected candidate remembers
 // its nearest root, so later passes re-test only those that may now fit.
-// Deterministic: the same seed gives the same roots in the same order.
+// Deterministic: the same seed gives the same roots in the same order. Returns
+// nothing once `cancel` is requested.
 std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count, uint32_t seed,
-                                      PlacementStats* stats = nullptr);
+                                      PlacementStats* stats = nullptr, const Cancel& cancel = {});
 
 }  // namespace inkray

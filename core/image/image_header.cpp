@@ -1,0 +1,26 @@
+// Reads image headers through stb_image's info functions, which decode no pixels.
+#include "core/image/image_header.h"
+
+#include <stb_image.h>
+
+namespace inkray {
+
+std::optional<ImageSize> read_image_size(const std::filesystem::path& file, std::string* error) {
+  ImageSize size;
+  int channels = 0;
+  if (!stbi_info(file.c_str(), &size.width, &size.height, &channels)) {
+    const char* reason = stbi_failure_reason();
+    *error = file.string() + ": cannot read image (" + (reason ? reason : "unknown format") + ")";
+    return std::nullopt;
+  }
+  if (size.width <= 0 || size.height <= 0 || size.width > kMaxImageSide || size.height > kMaxImageSide ||
+      size.texels() > kMaxImageTexels) {
+    *error = file.string() + ": the image is " + std::to_string(size.width) + " x " + std::to_string(size.height) +
+             " pixels; inkray reads images of at most 8192 x 8192 pixels (67 Mpixels) and " +
+             std::to_string(kMaxImageSide) + " on a side";
+    return std::nullopt;
+  }
+  return size;
+}
+
+}  // namespace inkray

@@ -1,0 +1,29 @@
+// The files of a finished render: the image and its AOVs, encoded by extension and
+// committed together (core/io/output_set.h), so a failed AOV leaves no image behind.
+// inkray-render and the editor's export both write through here.
+#pragma once
+
+#include "core/base/cancel.h"
+#include "core/film/film.h"
+#include "core/render/render_session.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace inkray {
+
+struct AovFile {
+  Aov aov;
+  std::filesystem::path file;  // .png gets the AOV's display mapping, .pfm and .exr raw values
+};
+
+enum class OutputsWritten { all, failed, cancelled };
+
+// Stages every file, then renames them all in. On `failed`, *error names the file
+// that failed and no target has been touched. `cancel` stops the painterly filter
+// (seconds at a large radius): `cancelled`, and nothing is written.
+OutputsWritten write_render_outputs(RenderSession& session, const std::filesystem::path& image,
+                                    const std::vector<AovFile>& aovs, std::string* error, const Cancel& cancel = {});
+
+}  // namespace inkray
