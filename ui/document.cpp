@@ -60,7 +60,11 @@ bool Document::redo() {
 
 bool Document::open(const std::filesystem::path& file, std::vector<std::string>* errors,
                     std::vector<std::string>* warnings) {
-  SceneLoadResult loaded = load_scene(file, ReadFor::editing);
+  return open_loaded(load_scene(file, ReadFor::editing), file, errors, warnings);
+}
+
+bool Document::open_loaded(SceneLoadResult loaded, const std::filesystem::path& file,
+                           std::vector<std::string>* errors, std::vector<std::string>* warnings) {
   if (warnings) *warnings = std::move(loaded.warnings);
   if (!loaded) {
     if (errors) *errors = std::move(loaded.errors);

@@ -2,6 +2,7 @@
 // state. Every change goes through edit(), so every change can be undone.
 #pragma once
 
+#include "core/scene/json_io.h"
 #include "ui/command_stack.h"
 
 #include <filesystem>
@@ -36,6 +37,9 @@ class Document {
   // why in *warnings, so the user can mend it.
   bool open(const std::filesystem::path& file, std::vector<std::string>* errors,
             std::vector<std::string>* warnings = nullptr);
+  // The same for a file already read (for editing) elsewhere, e.g. by a SceneLoader.
+  bool open_loaded(SceneLoadResult loaded, const std::filesystem::path& file, std::vector<std::string>* errors,
+                   std::vector<std::string>* warnings = nullptr);
   void reset(SceneDesc scene, std::filesystem::path file = {}, bool dirty = false);
   bool save(std::string* error);
   bool save_as(const std::filesystem::path& file, std::string* error);

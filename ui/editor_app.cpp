@@ -50,7 +50,9 @@ EditorApp::EditorApp(EditorOptions options)
     recovery_ = autosave_.find(&errors);
     for (const auto& e : errors) state_.log.warning("recovery file unreadable: " + e);
   }
-  if (!options_.scene.empty()) open_file(options_.scene);
+  // The file named on the command line is read before the first frame, so scripted
+  // runs (--select, --screenshot) see it; files opened later are read in the background.
+  if (!options_.scene.empty()) finish_open(options_.scene, load_scene(options_.scene, ReadFor::editing));
   state_.log.info("viewport renders on " + std::to_string(renderer_.threads()) + " threads");
 }
 
@@ -93,8 +95,17 @@ void EditorApp::run(Pending action, const std::filesystem::path& file) {
 }
 
 void EditorApp::open_file(const std::filesystem::path& file) {
+  loader_.start(file);
+  state_.log.info("opening " + file.string());
+}
+
+void EditorApp::finish_open(const std::filesystem::path& file, SceneLoadResult loaded) {
+  if (loaded.cancelled) {
+    state_.log.info("opening " + file.string() + " cancelled");
+    return;
+  }
   std::vector<std::string> errors, warnings;
-  if (!state_.document.open(file, &errors, &warnings)) {
+  if (!state_.document.open_loaded(std::move(loaded), file, &errors, &warnings)) {
     // The current document stays; the errors go to a dialog and the log.
     for (const auto& e : errors) state_.log.error(e);
     load_errors_ = std::move(errors);
@@ -292,6 +303,13 @@ void EditorApp::dialogs() {
       }
     }
   }
+  if (loader_.busy() && !ImGui::IsPopupOpen("Opening")) ImGui::OpenPopup("Opening");
+  if (ImGui::BeginPopupModal("Opening", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("Reading %s ... %.1f s", loader_.file().filename().string().c_str(), loader_.seconds());
+    if (ImGui::Button("Cancel")) loader_.cancel();
+    if (!loader_.busy()) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
   if (ask_unsaved_) {
     ImGui::OpenPopup("Unsaved changes");
     ask_unsaved_ = false;
@@ -374,7 +392,12 @@ void EditorApp::sync_renderer() {
 }
 
 void EditorApp::poll_background() {
-  for (auto& m : renderer_.take_messages()) state_.log.error(m);
+  if (auto loaded = loader_.take()) finish_open(loader_.file(), std::move(*loaded));
+  if (std::vector<std::string> problems = renderer_.take_messages(); !problems.empty()) {
+    for (const auto& m : problems) state_.log.error(m);
+    state_.render_problems = std::move(problems);
+  }
+  if (viewport_frame_.new_revision_shown != 0) state_.render_problems.clear();
   if (viewport_frame_.new_revision_shown != 0) {
     const auto it = submit_times_.find(viewport_frame_.new_revision_shown);
     if (it != submit_times_.end()) {

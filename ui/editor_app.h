@@ -8,6 +8,7 @@
 #include "ui/editor_state.h"
 #include "ui/file_dialog.h"
 #include "ui/recent_files.h"
+#include "ui/scene_loader.h"
 #include "ui/viewport_panel.h"
 
 #include <chrono>
@@ -58,7 +59,8 @@ class EditorApp {
 
   void guarded(Pending action, std::filesystem::path file = {});  // asks about unsaved changes first
   void run(Pending action, const std::filesystem::path& file);
-  void open_file(const std::filesystem::path& file);
+  void open_file(const std::filesystem::path& file);  // reads on loader_, finishes in poll_background
+  void finish_open(const std::filesystem::path& file, SceneLoadResult loaded);
   void save(bool choose_file);
   void frame_selected();
   void start_export();
@@ -72,6 +74,7 @@ class EditorApp {
   enum class DialogPurpose { open, save_as, add_mesh } dialog_purpose_ = DialogPurpose::open;
   RecentFiles recent_;
   Autosave autosave_;
+  SceneLoader loader_;
 
   Pending pending_ = Pending::none;
   std::filesystem::path pending_file_;

@@ -31,6 +31,9 @@ struct EditorState {
   bool paused = false;
   CameraDesc home_camera;  // "Reset camera" returns here: the camera the document opened with
   bool region_tool = false;  // left drag in the viewport draws a render region instead of orbiting
+  // Why the newest document cannot render (an unset file, a dangling name), shown over
+  // the viewport until a document that renders replaces it.
+  std::vector<std::string> render_problems;
   ExportSettings export_settings;
   std::unique_ptr<ExportJob> export_job;
 

@@ -90,6 +90,18 @@ void ViewportPanel::toolbar(EditorState& state, ProgressiveRenderer& renderer) {
   (void)renderer;
 }
 
+void ViewportPanel::problems_overlay(const std::vector<std::string>& problems, float x, float y, float w) {
+  std::string text = "This scene cannot render until this is mended:";
+  constexpr size_t kShown = 6;
+  for (size_t i = 0; i < problems.size() && i < kShown; ++i) text += "\n" + problems[i];
+  if (problems.size() > kShown) text += "\n... and " + std::to_string(problems.size() - kShown) + " more (see the log)";
+  const float wrap = std::max(w - 28.f, 200.f);
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(ImVec2(x + 6, y + 6), ImVec2(x + 18 + size.x, y + 16 + size.y), IM_COL32(90, 20, 20, 220), 4.f);
+  draw->AddText(nullptr, 0.f, ImVec2(x + 12, y + 11), IM_COL32(255, 230, 220, 255), text.c_str(), nullptr, wrap);
+}
+
 void ViewportPanel::overlay(const ViewportSnapshot& s, float x, float y) {
   const RenderStats& st = s.stats;
   const double rays_per_s = st.elapsed_seconds > 0 ? double(st.rays) / st.elapsed_seconds : 0.0;
@@ -230,7 +242,11 @@ ViewportFrame ViewportPanel::draw(EditorState& state, ProgressiveRenderer& rende
                   1.f);
   }
   handle_input(state, renderer, x, y, w, h);
-  if (snapshot_) overlay(*snapshot_, x, y);
+  if (!state.render_problems.empty()) {
+    problems_overlay(state.render_problems, x, y, w);
+  } else if (snapshot_) {
+    overlay(*snapshot_, x, y);
+  }
   frame.image_x = x, frame.image_y = y, frame.image_w = w, frame.image_h = h;
   return frame;
 }

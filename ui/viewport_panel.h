@@ -32,6 +32,7 @@ class ViewportPanel {
   void upload(const ViewportSnapshot& snapshot);
   void toolbar(EditorState& state, ProgressiveRenderer& renderer);
   void overlay(const ViewportSnapshot& snapshot, float x, float y);
+  void problems_overlay(const std::vector<std::string>& problems, float x, float y, float w);
   void handle_input(EditorState& state, const ProgressiveRenderer& renderer, float x, float y, float w, float h);
 
   unsigned texture_ = 0;
