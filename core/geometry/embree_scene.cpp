@@ -95,7 +95,7 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
 // cameras far inside that; this last check (one compare per axis) turns a ray that
 // got there anyway into a miss instead of a crash.
 bool traceable(const Ray& ray, float t_max) {
-  constexpr float kLimit = 1e18f;
+  constexpr float kLimit = 1e18f;  // comparisons false for NaN, so NaN is refused too
   return std::fabs(ray.o.x) < kLimit && std::fabs(ray.o.y) < kLimit && std::fabs(ray.o.z) < kLimit &&
          std::isfinite(ray.d.x + ray.d.y + ray.d.z) && t_max >= 0.f;
 }
