@@ -59,8 +59,9 @@ uint64_t ProgressiveRenderer::submit(const SceneDesc& scene) {
     pending_ = scene;
     revision = pending_revision_ = ++revisions_;
     pending_time_ = std::chrono::steady_clock::now();
+    // Under the lock, so it cannot land after the worker took this very document.
+    superseded_.store(true);
   }
-  superseded_.store(true);
   session_.cancel();
   wake_.notify_all();
   return revision;
