@@ -103,7 +103,7 @@ int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
   RenderSession session(opt.threads.value_or(0));
   session.set_scene(compiled.scene, aovs);
   // The render gets what reading and building left of the time, less what the painterly
-  // filter will need after it (at least one pass is made).
+  // filter will need after it.
   double render_seconds = 0.0;
   if (time_limit > 0.0) {
     const double filter_seconds =
@@ -123,6 +123,7 @@ int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
     if (progress) print_progress(s, limits);
   });
   if (progress) std::fprintf(stderr, "\n");
+  if (history.empty()) return out_of_time(time_limit, "rendering the first sample of every pixel");
 
   // Every output is staged before any is replaced: a failed AOV leaves no image behind.
   std::vector<AovFile> aov_files;

@@ -1,6 +1,6 @@
 // Final renders: passes until the sample count or the time limit. A pass can take
 // long (a closed white room at 1024 bounces, an 8K image), so the time limit also
-// stops a pass in flight, once the first has given every pixel a sample.
+// stops a pass in flight.
 #include "core/render/batch_render.h"
 
 #include <chrono>
@@ -45,22 +45,14 @@ class PassDeadline {
 std::vector<PassRecord> render_batch(RenderSession& session, const BatchLimits& limits,
                                      const std::function<void(const RenderStats&)>& on_pass) {
   std::vector<PassRecord> history;
-  const auto record = [&] {
+  // Passes stop at the limit even mid-pass. The tiles a cut pass finished keep their
+  // sample: the film counts samples per pixel, so every pixel's mean stays right.
+  PassDeadline deadline(session, limits.time_seconds);
+  while (int(session.stats().spp) < limits.spp) {
+    if (!session.render_pass()) break;
     const RenderStats& s = session.stats();
     history.push_back({s.passes, s.spp, s.elapsed_seconds, s.relative_error});
     if (on_pass) on_pass(s);
-  };
-  // The first pass always completes: an image needs a sample in every pixel.
-  if (limits.spp <= 0 || !session.render_pass()) return history;
-  record();
-  const double left = limits.time_seconds - session.stats().elapsed_seconds;
-  if (limits.time_seconds > 0.0 && left <= 0.0) return history;
-  // Later passes stop at the limit even mid-pass. The tiles a cut pass finished keep
-  // their sample: the film counts samples per pixel, so every pixel's mean is right.
-  PassDeadline deadline(session, limits.time_seconds > 0.0 ? left : 0.0);
-  while (int(session.stats().spp) < limits.spp) {
-    if (!session.render_pass()) break;
-    record();
   }
   return history;
 }

@@ -21,8 +21,9 @@ struct PassRecord {
   double relative_error = 0.0;
 };
 
-// Renders into the session's film; on_pass runs after every completed pass. The
-// first pass always completes; after it, the time limit cuts a pass in flight.
+// Renders into the session's film; on_pass runs after every completed pass. The time
+// limit cuts a pass in flight, the first included: when it cuts the first, some
+// pixels have no sample and the history is empty, which callers must not write out.
 std::vector<PassRecord> render_batch(RenderSession& session, const BatchLimits& limits,
                                      const std::function<void(const RenderStats&)>& on_pass = {});
 

@@ -18,6 +18,12 @@ ExportJob::~ExportJob() {
   thread_.join();
 }
 
+void ExportJob::cancel() {
+  cancelled_.store(true);
+  std::lock_guard lock(mutex_);
+  if (session_) session_->cancel();
+}
+
 std::string ExportJob::error() const {
   std::lock_guard lock(mutex_);
   return error_;
@@ -62,6 +68,10 @@ void ExportJob::run(ExportRequest request) {
   for (Aov a : request.aovs) aovs.add(a);
   RenderSession session(request.threads);
   session.set_scene(compiled.scene, aovs);
+  {
+    std::lock_guard lock(mutex_);
+    session_ = &session;  // so cancel() stops the pass in flight
+  }
   const int spp = std::max(request.spp, 1);
   while (int(session.stats().spp) < spp && !cancelled_.load()) {
     if (!session.render_pass()) break;
@@ -71,6 +81,10 @@ void ExportJob::run(ExportRequest request) {
       if (session.stats().elapsed_seconds >= request.time_seconds) break;
     }
     progress_.store(std::min(p, 1.f));
+  }
+  {
+    std::lock_guard lock(mutex_);
+    session_ = nullptr;
   }
   if (cancelled_.load()) {
     fail("cancelled");

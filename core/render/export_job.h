@@ -16,6 +16,8 @@
 
 namespace inkray {
 
+class RenderSession;
+
 struct ExportRequest {
   SceneDesc scene;
   std::filesystem::path output;
@@ -34,7 +36,9 @@ class ExportJob {
 
   float progress() const { return progress_.load(); }  // 0..1
   bool done() const { return done_.load(); }
-  void cancel() { cancelled_.store(true); }
+  // Stops the build, the pass in flight (one pass of a deep scene can take a minute)
+  // and the painterly filter; nothing is written.
+  void cancel();
   // After done(): empty on success, else why it failed. Also lists the files written.
   std::string error() const;
   std::vector<std::filesystem::path> written() const;
@@ -49,6 +53,7 @@ class ExportJob {
   mutable std::mutex mutex_;
   std::string error_;
   std::vector<std::filesystem::path> written_;
+  RenderSession* session_ = nullptr;  // while rendering, under mutex_
   std::thread thread_;
 };
 

@@ -107,6 +107,21 @@ TEST_F(InkrayRender, TimeLimitLeavesRoomForThePainterlyFilter) {
   EXPECT_TRUE(std::filesystem::exists(out));
 }
 
+// A closed white room at 1024 bounces: one pass takes seconds, the limit half of one.
+TEST_F(InkrayRender, TimeLimitCutsTheFirstPassAndWritesNothing) {
+  const auto file = dir_ / "room.json";
+  std::ofstream(file) << R"({"format": "inkray-scene", "version": 1,
+    "camera": {"look_from": [0, 0, 0], "look_at": [0, 0, -1]},
+    "render": {"width": 160, "height": 120, "max_depth": 1024},
+    "materials": [{"name": "white", "type": "diffuse", "albedo": 1}],
+    "objects": [{"name": "room", "material": "white", "shape": {"type": "sphere", "radius": 10}}]})";
+  const auto out = dir_ / "room.png";
+  const RunResult r = run_render(file.string() + " -o " + out.string() + " --time 0.5 -q");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("ran out while rendering the first sample of every pixel"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST_F(InkrayRender, MemoryLimitRefusesAScenePredictedToExceedIt) {
   const auto out = dir_ / "m.png";
   RunResult r = run_render(scene("strokes_100k.json") + " -o " + out.string() + " --memory-limit 16M -q");
