@@ -1,11 +1,15 @@
 // Reads image headers through stb_image's info functions, which decode no pixels.
 #include "core/image/image_header.h"
 
+#include "core/image/image_guard.h"
+
 #include <stb_image.h>
 
 namespace inkray {
 
 std::optional<ImageSize> read_image_size(const std::filesystem::path& file, std::string* error) {
+  // stb_image's own header parsers are not safe on every file (image_guard.h).
+  if (!image_safe_to_decode(file, error)) return std::nullopt;
   ImageSize size;
   int channels = 0;
   if (!stbi_info(file.c_str(), &size.width, &size.height, &channels)) {

@@ -20,7 +20,8 @@ struct ImageSize {
 };
 
 // The size stb_image would decode to, from the header alone; nullopt with *error
-// naming the file when it is unreadable, not an image, or larger than the limits.
+// naming the file when it is unreadable, not an image, not safe to hand to stb_image
+// (image_guard.h), or larger than the limits. Every read of an image starts here.
 std::optional<ImageSize> read_image_size(const std::filesystem::path& file, std::string* error);
 
 }  // namespace inkray

@@ -2,7 +2,6 @@
 // replacement) and reading textures and PFM back.
 #include "core/image/image_io.h"
 
-#include "core/image/image_guard.h"
 #include "core/image/image_header.h"
 #include "core/io/atomic_file.h"
 
@@ -143,7 +142,6 @@ bool read_image(const std::filesystem::path& file, bool srgb, RgbImage* image, s
   };
   image->pixels.clear();
   if (!read_image_size(file, error)) return false;  // before decoding: the header may ask for gigabytes
-  if (!image_safe_to_decode(file, error)) return false;
   if (stbi_is_hdr(name.c_str())) {
     float* data = stbi_loadf(name.c_str(), &w, &h, &channels, 3);
     if (!data) return fail();

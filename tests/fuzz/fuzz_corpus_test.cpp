@@ -1,7 +1,6 @@
 // Replays every fuzz corpus and fixed crash (tests/fuzz/corpus/TARGET/ and the files
 // directly in tests/fuzz/crashes/TARGET/) through its harness in the normal build, so a
-// regression of anything the fuzzers once found fails the ordinary test run. Findings
-// not fixed yet wait in crashes/TARGET/unfixed/, which is not replayed.
+// regression of anything the fuzzers once found fails the ordinary test run.
 #include "tests/fuzz/fuzz_targets.h"
 
 #include <gtest/gtest.h>

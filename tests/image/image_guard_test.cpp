@@ -17,7 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kHostile = fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "images" / "hostile";
+// Minimised by the image fuzzer (tests/fuzz); FuzzCorpus.ImageReader replays them too.
+const fs::path kHostile = fs::path(INKRAY_SOURCE_DIR) / "tests" / "fuzz" / "crashes" / "image_reader";
 
 // Each of these hangs stb_image, overflows its heap or its integers, or is UB in it.
 TEST(ImageGuard, FilesThatBreakTheDecoderAreRefusedWithTheirName) {
