@@ -7,23 +7,9 @@
 namespace inkray {
 namespace {
 
-SceneDesc white_room(int width, int height) {
-  SceneDesc d = testing::small_scene(width, height);
-  d.render.max_depth = 1024;
-  d.camera.look_from = Point3(0.f);
-  d.camera.look_at = Point3(0.f, 0.f, -1.f);
-  d.materials = {{"white", DiffuseDesc{Color(1.f)}, {}}};
-  ObjectDesc room;
-  room.name = "room";
-  room.material = "white";
-  room.shape = SphereDesc{Point3(0.f), 10.f};
-  d.objects = {room};
-  return d;
-}
-
 // Every path runs all 1024 bounces: a pass takes far longer than the millisecond allowed.
 TEST(BatchDeadline, TheTimeLimitCutsAPassInFlight) {
-  const CompileResult c = compile_scene(white_room(48, 32));
+  const CompileResult c = compile_scene(testing::white_room_scene(48, 32));
   ASSERT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
   RenderSession session(2);
   session.set_scene(c.scene);
@@ -38,7 +24,7 @@ TEST(BatchDeadline, TheTimeLimitCutsAPassInFlight) {
 
 // Without a limit the same scene renders its passes in full.
 TEST(BatchDeadline, NoLimitRendersEveryPass) {
-  const CompileResult c = compile_scene(white_room(8, 6));
+  const CompileResult c = compile_scene(testing::white_room_scene(8, 6));
   ASSERT_TRUE(c.scene);
   RenderSession session(2);
   session.set_scene(c.scene);

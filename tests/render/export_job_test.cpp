@@ -4,6 +4,8 @@
 #include "core/image/image_io.h"
 #include "core/scene/json_io.h"
 
+#include "tests/support/render_helpers.h"
+
 #include <gtest/gtest.h>
 #include <tinyexr.h>
 
@@ -120,18 +122,7 @@ TEST(ExportJob, AFailedAovLeavesNoImage) {
 // up after 60 s), and write nothing.
 TEST(ExportJob, CancelStopsThePassInFlight) {
   const fs::path dir = fresh_dir("cancel");
-  SceneDesc d;
-  d.render.width = 800;
-  d.render.height = 600;
-  d.render.max_depth = 1024;
-  d.camera.look_from = Point3(0.f);
-  d.camera.look_at = Point3(0.f, 0.f, -1.f);
-  d.materials = {{"white", DiffuseDesc{Color(1.f)}, {}}};
-  ObjectDesc room;
-  room.name = "room";
-  room.material = "white";
-  room.shape = SphereDesc{Point3(0.f), 10.f};
-  d.objects = {room};
+  const SceneDesc d = testing::white_room_scene(800, 600);
   ExportRequest request;
   request.scene = d;
   request.output = dir / "room.png";

@@ -27,6 +27,22 @@ inline SceneDesc one_sphere_scene(int width, int height) {
   return d;
 }
 
+// Inside a closed white sphere at 1024 bounces: every path runs to the end, so one
+// pass takes long (tests of time limits and cancelling).
+inline SceneDesc white_room_scene(int width, int height) {
+  SceneDesc d = small_scene(width, height);
+  d.render.max_depth = 1024;
+  d.camera.look_from = Point3(0.f);
+  d.camera.look_at = Point3(0.f, 0.f, -1.f);
+  d.materials = {{"white", DiffuseDesc{Color(1.f)}, {}}};
+  ObjectDesc room;
+  room.name = "room";
+  room.material = "white";
+  room.shape = SphereDesc{Point3(0.f), 10.f};
+  d.objects = {room};
+  return d;
+}
+
 inline RgbImage render_scene(const SceneDesc& desc, int spp, int threads = 2, RenderStats* stats = nullptr) {
   const CompileResult c = compile_scene(desc);
   EXPECT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
