@@ -24,6 +24,14 @@ std::optional<ImageSize> read_image_size(const std::filesystem::path& file, std:
              std::to_string(kMaxImageSide) + " on a side";
     return std::nullopt;
   }
+  std::error_code ec;
+  const auto bytes = static_cast<long long>(std::filesystem::file_size(file, ec));
+  if (!ec && size.texels() > kFreeTexels + bytes * kMaxTexelsPerFileByte) {
+    *error = file.string() + ": the image claims " + std::to_string(size.width) + " x " +
+             std::to_string(size.height) + " pixels but the file has only " + std::to_string(bytes) +
+             " bytes: no format inkray reads packs that many pixels into so few bytes";
+    return std::nullopt;
+  }
   return size;
 }
 

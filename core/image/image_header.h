@@ -14,6 +14,12 @@ inline constexpr long long kMaxImageTexels = 8192LL * 8192LL;
 // Either side on its own; a 65536 x 1 strip is no harm, a 100000-wide one is a mistake.
 inline constexpr int kMaxImageSide = 32768;
 
+// No format inkray reads packs more pixels into a byte than a 1-bit PNG at deflate's
+// best ratio (8 pixels a byte, 1032:1): a header claiming more than that many pixels
+// per byte of file (beyond a small allowance) is a lie that would cost a huge decode.
+inline constexpr long long kMaxTexelsPerFileByte = 8 * 1032;
+inline constexpr long long kFreeTexels = 1 << 16;
+
 struct ImageSize {
   int width = 0, height = 0;
   long long texels() const { return static_cast<long long>(width) * height; }

@@ -50,6 +50,22 @@ TEST(ImageGuard, FilesThatBreakTheDecoderAreRefusedWithTheirName) {
   }
 }
 
+// 718 bytes of JPEG claiming 2568 x 20550 pixels: within the size limits, but a decode
+// of 53 million pixels from nothing (a fuzzer's timeout).
+TEST(ImageGuard, AHeaderClaimingFarMorePixelsThanItsFileCanHoldIsRefused) {
+  const fs::path file = kHostile / "timeout-e692b4dccce9d2add09df3081eebb7ef1c1abeeb";
+  RgbImage image;
+  std::string error;
+  EXPECT_FALSE(read_image(file, true, &image, &error));
+  EXPECT_NE(error.find("claims 2568 x 20550 pixels but the file has only 718 bytes"), std::string::npos) << error;
+  // A 1-bit PNG at deflate's best is the densest legitimate file; it stays readable.
+  testing::ScratchFolder dir;
+  const int side = 1024;
+  std::vector<unsigned char> black(size_t(side) * side * 3, 0);
+  ASSERT_TRUE(stbi_write_png((dir / "flat.png").c_str(), side, side, 3, black.data(), side * 3));
+  EXPECT_TRUE(read_image(dir / "flat.png", true, &image, &error)) << error;
+}
+
 TEST(ImageGuard, EveryDocumentedFormatStillLoads) {
   testing::ScratchFolder dir;
   const int w = 40, h = 24;

@@ -144,7 +144,7 @@ TEST(SceneLimits, ImagesHaveABudgetPerScene) {
   s.materials.clear();
   for (int i = 0; i < 5; ++i) {
     const std::string name = "t" + std::to_string(i) + ".png";
-    testing::write_png_header(dir.path() / name, 8192, 8192);
+    testing::write_png_header(dir.path() / name, 8192, 8192, 16384);  // as long as a real 1-bit PNG could be
     s.materials.push_back({"m" + std::to_string(i), DiffuseDesc{ImageTextureDesc{name, Color(1.f), true}}, {}});
   }
   s.objects[0].material = "m0";

@@ -3,13 +3,16 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 
 namespace inkray::testing {
 
-inline void write_png_header(const std::filesystem::path& file, std::uint32_t width, std::uint32_t height) {
+// `padding` zero bytes follow, for a file as long as a real one of that size could be.
+inline void write_png_header(const std::filesystem::path& file, std::uint32_t width, std::uint32_t height,
+                             std::size_t padding = 0) {
   const auto be32 = [](std::uint32_t v) {
     return std::array<char, 4>{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
   };
@@ -21,6 +24,7 @@ inline void write_png_header(const std::filesystem::path& file, std::uint32_t wi
   out.write(be32(height).data(), 4);
   out.write("\x08\x02\x00\x00\x00", 5);  // 8-bit RGB, no interlace
   out.write("\0\0\0\0", 4);              // CRC: stb_image does not check it
+  for (std::size_t i = 0; i < padding; ++i) out.put('\0');
 }
 
 }  // namespace inkray::testing
