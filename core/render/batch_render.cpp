@@ -16,14 +16,16 @@ class PassDeadline {
  public:
   PassDeadline(RenderSession& session, double seconds) {
     if (seconds <= 0.0) return;
-    const auto deadline =
-        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                               std::chrono::duration<double>(seconds));
-    watcher_ = std::thread([this, &session, deadline] {
+    deadline_ = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                       std::chrono::duration<double>(seconds));
+    watcher_ = std::thread([this, &session] {
       std::unique_lock lock(mutex_);
-      if (!wake_.wait_until(lock, deadline, [this] { return stopped_; })) session.cancel();
+      if (!wake_.wait_until(lock, deadline_, [this] { return stopped_; })) session.cancel();
     });
   }
+  // Also checked between passes: a cancel that lands between two passes is cleared by
+  // the next one's start, so the watcher alone could miss it.
+  bool passed() const { return std::chrono::steady_clock::now() >= deadline_; }
   ~PassDeadline() {
     {
       std::lock_guard lock(mutex_);
@@ -37,6 +39,7 @@ class PassDeadline {
   std::mutex mutex_;
   std::condition_variable wake_;
   bool stopped_ = false;
+  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
   std::thread watcher_;
 };
 
@@ -48,7 +51,7 @@ std::vector<PassRecord> render_batch(RenderSession& session, const BatchLimits& 
   // Passes stop at the limit even mid-pass. The tiles a cut pass finished keep their
   // sample: the film counts samples per pixel, so every pixel's mean stays right.
   PassDeadline deadline(session, limits.time_seconds);
-  while (int(session.stats().spp) < limits.spp) {
+  while (int(session.stats().spp) < limits.spp && !deadline.passed()) {
     if (!session.render_pass()) break;
     const RenderStats& s = session.stats();
     history.push_back({s.passes, s.spp, s.elapsed_seconds, s.relative_error});

@@ -34,5 +34,18 @@ TEST(BatchDeadline, NoLimitRendersEveryPass) {
     for (int x = 0; x < 8; ++x) ASSERT_EQ(session.film().samples_at(x, y), 2u);
 }
 
+// Passes of a millisecond: the deadline usually falls between two of them, where the
+// next pass's start would clear a cancel; the loop must still stop.
+TEST(BatchDeadline, ManyShortPassesStopAtTheLimit) {
+  const CompileResult c = compile_scene(testing::one_sphere_scene(4, 4));
+  ASSERT_TRUE(c.scene);
+  for (int run = 0; run < 5; ++run) {
+    RenderSession session(2);
+    session.set_scene(c.scene);
+    const std::vector<PassRecord> history = render_batch(session, {1 << 20, 0.05});
+    EXPECT_LT(history.size(), size_t(1) << 20);
+  }
+}
+
 }  // namespace
 }  // namespace inkray
