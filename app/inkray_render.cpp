@@ -3,8 +3,8 @@
 #include "core/film/resolve.h"
 #include "core/render/batch_render.h"
 #include "core/render/render_outputs.h"
-#include "core/scene/compile.h"
-#include "core/scene/json_io.h"
+#include "core/compiler/compile.h"
+#include "core/document/json_io.h"
 
 #include <algorithm>
 #include <chrono>

@@ -3,8 +3,8 @@
 // block present (which must cost nothing), and at several stencil qualities,
 // and prints seconds per sample per pixel and the overhead against lines off.
 #include "core/render/batch_render.h"
-#include "core/scene/compile.h"
-#include "core/scene/json_io.h"
+#include "core/compiler/compile.h"
+#include "core/document/json_io.h"
 
 #include <algorithm>
 #include <chrono>

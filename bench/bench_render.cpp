@@ -7,8 +7,8 @@
 #include "core/sampling/sampler.h"
 #include "core/sampling/warp.h"
 #include "core/math/frame.h"
-#include "core/scene/compile.h"
-#include "core/scene/json_io.h"
+#include "core/compiler/compile.h"
+#include "core/document/json_io.h"
 
 #include <sys/resource.h>
 

@@ -9,8 +9,8 @@
 #include "core/npr/strokes/stroke_mesh.h"
 #include "core/npr/strokes/stroke_placement.h"
 #include "core/render/render_session.h"
-#include "core/scene/compile.h"
-#include "core/scene/json_io.h"
+#include "core/compiler/compile.h"
+#include "core/document/json_io.h"
 
 #include <sys/resource.h>
 

@@ -2,7 +2,7 @@
 #include "ui/autosave.h"
 
 #include "core/io/atomic_file.h"
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 
 #include <fstream>
 #include <sstream>

@@ -3,7 +3,7 @@
 // save removes it, so a recovery file found at start-up means a crash.
 #pragma once
 
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <chrono>
 #include <filesystem>

@@ -3,7 +3,7 @@
 // look_at, and framing a bounding sphere. Plain maths, tested without a window.
 #pragma once
 
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 namespace inkray {
 

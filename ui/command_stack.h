@@ -3,7 +3,7 @@
 // them), and whole snapshots make every edit undoable with one mechanism.
 #pragma once
 
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "ui/document.h"
 
-#include "core/scene/asset_paths.h"
-#include "core/scene/json_io.h"
+#include "core/document/asset_paths.h"
+#include "core/document/json_io.h"
 
 #include <utility>
 

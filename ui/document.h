@@ -2,7 +2,7 @@
 // state. Every change goes through edit(), so every change can be undone.
 #pragma once
 
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 #include "ui/command_stack.h"
 
 #include <filesystem>

@@ -3,7 +3,7 @@
 // range and doc as a tooltip, and records which parameter changed.
 #pragma once
 
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <string>
 #include <type_traits>

@@ -3,7 +3,7 @@
 // compiled geometry; safe on the UI thread since compiled scenes are immutable.
 #pragma once
 
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 namespace inkray {
 

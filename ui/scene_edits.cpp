@@ -1,6 +1,6 @@
 #include "ui/scene_edits.h"
 
-#include "core/scene/compile.h"
+#include "core/compiler/compile.h"
 
 #include <algorithm>
 #include <vector>

@@ -3,7 +3,7 @@
 // been and can cancel (docs/architecture.md, "Long work and cancellation").
 #pragma once
 
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 
 #include <atomic>
 #include <chrono>

@@ -1,7 +1,7 @@
 // What the user has selected: one item of the document, by kind and index.
 #pragma once
 
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <string>
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/geometry/ray.h"
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 namespace inkray {
 

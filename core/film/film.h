@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/image/rgb_image.h"
+#include "core/integrator/first_hit.h"
 #include "core/npr/outlines/line_types.h"
 
 #include <array>
@@ -39,15 +40,6 @@ struct AovSet {
   bool has(Aov a) const { return bits & (1u << uint32_t(a)); }
   void add(Aov a) { bits |= 1u << uint32_t(a); }
   bool any_first_hit() const { return bits & ((1u << uint32_t(Aov::outline)) - 1u); }
-};
-
-// What the camera sample saw at its first hit.
-struct FirstHit {
-  Color albedo{0.f};
-  Normal3 normal{0.f};
-  float depth = 0.f;  // distance along the camera's forward axis
-  int object = -1;    // -1 where the sample escaped
-  int material = -1;
 };
 
 class Film {

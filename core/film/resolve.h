@@ -6,7 +6,7 @@
 #include "core/base/cancel.h"
 #include "core/film/film.h"
 #include "core/render/thread_pool.h"
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 namespace inkray {
 

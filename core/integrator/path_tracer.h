@@ -4,9 +4,9 @@
 // surfaces otherwise; mix materials pick one side per sample.
 #pragma once
 
-#include "core/film/film.h"
+#include "core/integrator/first_hit.h"
 #include "core/sampling/sampler.h"
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 namespace inkray {
 

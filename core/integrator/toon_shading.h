@@ -6,7 +6,7 @@
 #include "core/lights/light.h"
 #include "core/materials/toon.h"
 #include "core/sampling/sampler.h"
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 namespace inkray {
 

@@ -3,7 +3,7 @@
 #include "core/io/output_set.h"
 #include "core/render/render_outputs.h"
 #include "core/render/render_session.h"
-#include "core/scene/compile.h"
+#include "core/compiler/compile.h"
 
 #include <algorithm>
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/film/film.h"
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <atomic>
 #include <filesystem>

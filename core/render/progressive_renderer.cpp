@@ -2,8 +2,8 @@
 
 #include "core/film/aov_display.h"
 #include "core/film/resolve.h"
-#include "core/scene/compile.h"
-#include "core/scene/json_io.h"
+#include "core/compiler/compile.h"
+#include "core/document/json_io.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include "core/film/film.h"
 #include "core/render/display_encode.h"
 #include "core/render/render_session.h"
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <atomic>
 #include <chrono>

@@ -6,7 +6,7 @@
 #include "core/film/film.h"
 #include "core/npr/outlines/line_detector.h"
 #include "core/render/thread_pool.h"
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 #include <array>
 #include <atomic>

@@ -1,6 +1,6 @@
 // Fuzz harness for the OBJ loader: parse_obj must never throw, and a mesh it returns
 // must be safe to hand to Embree (whole triangles, indices in range, finite values).
-#include "core/scene/obj_loader.h"
+#include "core/geometry/obj_loader.h"
 #include "tests/fuzz/fuzz_targets.h"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Fuzz harness for the scene reader: parse_scene must never throw, and a scene it
 // accepts, for rendering or for editing, must survive scene_to_string -> parse_scene
 // -> scene_to_string unchanged (what the editor saves, it must open again).
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 #include "tests/fuzz/fuzz_targets.h"
 
 #include <filesystem>

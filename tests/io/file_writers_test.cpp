@@ -3,7 +3,7 @@
 // saves cleaned up at the next save.
 #include "core/image/image_io.h"
 #include "core/io/atomic_file.h"
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 
 #include "support/file_helpers.h"
 

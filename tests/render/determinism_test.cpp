@@ -1,6 +1,6 @@
 // Images do not depend on thread count or tile order, and no scene in scenes/
 // produces a non-finite value.
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 #include "support/render_helpers.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // resolution, reports progress to done, and names the file it could not write.
 #include "core/render/export_job.h"
 #include "core/image/image_io.h"
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 
 #include "tests/support/render_helpers.h"
 

@@ -1,8 +1,8 @@
 // A render region restricts passes to its pixels: the rest of the film keeps
 // what it had (here nothing), so the editor can refine one area.
 #include "core/render/render_session.h"
-#include "core/scene/compile.h"
-#include "core/scene/json_io.h"
+#include "core/compiler/compile.h"
+#include "core/document/json_io.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // filters give up once their Cancel is requested, from another thread or by a
 // deadline. Each test would see a finished result if the checks were missing.
 #include "core/npr/painterly_filter.h"
-#include "core/scene/compile.h"
+#include "core/compiler/compile.h"
 
 #include "tests/support/render_helpers.h"
 

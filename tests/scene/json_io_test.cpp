@@ -1,10 +1,10 @@
 // Scene files: lossless save -> load round trips, atomic saving, and one broken file
 // per kind of mistake, each checked for the message a user would need to fix it.
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 
-#include "core/scene/json_write.h"
-#include "core/scene/scene_checks.h"
-#include "core/scene/tagged_variant.h"
+#include "core/document/json_write.h"
+#include "core/document/scene_checks.h"
+#include "core/document/tagged_variant.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

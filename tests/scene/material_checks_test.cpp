@@ -2,9 +2,9 @@
 // SceneDesc values directly (the broken-file table in json_io_test covers the
 // same messages through the reader), and compiling toon ramps and long mix chains.
 #include "core/image/image_io.h"
-#include "core/scene/compile.h"
-#include "core/scene/json_io.h"
-#include "core/scene/scene_checks.h"
+#include "core/compiler/compile.h"
+#include "core/document/json_io.h"
+#include "core/document/scene_checks.h"
 
 #include <gtest/gtest.h>
 

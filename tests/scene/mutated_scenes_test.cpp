@@ -3,8 +3,8 @@
 // and a deadline, render. No input may crash, hang, throw or give a non-finite
 // pixel; what the reader accepts must survive being written.
 #include "core/film/resolve.h"
-#include "core/scene/compile.h"
-#include "core/scene/json_io.h"
+#include "core/compiler/compile.h"
+#include "core/document/json_io.h"
 
 #include "tests/support/messages.h"
 #include "tests/support/render_helpers.h"

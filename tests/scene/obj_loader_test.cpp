@@ -1,6 +1,6 @@
 // OBJ meshes: attributes, vertex splitting, triangulation of convex and concave
 // polygons, and broken files that must fail with the file name and line.
-#include "core/scene/obj_loader.h"
+#include "core/geometry/obj_loader.h"
 
 #include <gtest/gtest.h>
 

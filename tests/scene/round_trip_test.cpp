@@ -1,7 +1,7 @@
 // The promise behind every Save: what the writer writes, the reader reads back to the
 // same document and the same picture. Held over every scene the project ships and
 // every file in tests/data/scenes/valid, through the editor's own Save As.
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 
 #include "tests/support/messages.h"
 #include "tests/support/render_helpers.h"

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "core/render/batch_render.h"
-#include "core/scene/compile.h"
+#include "core/compiler/compile.h"
 
 #include <gtest/gtest.h>
 

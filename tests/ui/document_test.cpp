@@ -1,7 +1,7 @@
 // Document files: save and reopen, a failed open keeps the document, and an
 // interrupted save (the process killed mid-write) leaves the old file intact.
-#include "core/scene/asset_paths.h"
-#include "core/scene/json_io.h"
+#include "core/document/asset_paths.h"
+#include "core/document/json_io.h"
 #include "ui/autosave.h"
 #include "ui/document.h"
 

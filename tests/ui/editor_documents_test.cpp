@@ -4,8 +4,8 @@
 // them, with files not chosen yet), saved, reopened, autosaved and recovered, and
 // walked back and forth through undo. A document that cannot render yet still opens
 // for editing, with the reasons as warnings.
-#include "core/scene/json_io.h"
-#include "core/scene/tagged_variant.h"
+#include "core/document/json_io.h"
+#include "core/document/tagged_variant.h"
 #include "ui/autosave.h"
 #include "ui/document.h"
 #include "ui/scene_edits.h"

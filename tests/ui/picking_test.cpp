@@ -1,5 +1,5 @@
 // Picking: a ray through the compiled scene finds the object under a pixel.
-#include "core/scene/compile.h"
+#include "core/compiler/compile.h"
 #include "ui/picking.h"
 #include "ui/scene_edits.h"
 

@@ -8,7 +8,7 @@
 #include "core/npr/outlines/line_types.h"
 #include "core/integrator/path_tracer.h"
 #include "core/sampling/sampler.h"
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 namespace inkray {
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/math/types.h"
-#include "core/scene/npr_desc.h"
+#include "core/document/npr_desc.h"
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,7 @@
 
 #include "core/geometry/ray.h"
 #include "core/integrator/path_tracer.h"
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 namespace inkray {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/geometry/alpha_mask.h"
-#include "core/scene/npr_desc.h"
+#include "core/document/npr_desc.h"
 
 #include <filesystem>
 #include <memory>

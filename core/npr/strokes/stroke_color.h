@@ -4,7 +4,7 @@
 
 #include "core/materials/material.h"
 #include "core/npr/strokes/surface_point.h"
-#include "core/scene/npr_desc.h"
+#include "core/document/npr_desc.h"
 
 #include <span>
 #include <vector>

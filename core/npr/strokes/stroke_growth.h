@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/npr/strokes/stroke_surface.h"
-#include "core/scene/npr_desc.h"
+#include "core/document/npr_desc.h"
 
 #include <vector>
 

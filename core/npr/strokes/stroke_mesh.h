@@ -6,7 +6,7 @@
 
 #include "core/geometry/triangle_mesh.h"
 #include "core/npr/strokes/stroke_surface.h"
-#include "core/scene/npr_desc.h"
+#include "core/document/npr_desc.h"
 
 #include <span>
 

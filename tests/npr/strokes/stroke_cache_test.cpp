@@ -1,7 +1,7 @@
 // Strokes are kept between compiles: an edit that does not touch the emitter
 // or its object reuses the ribbons and only repaints them, and the result is
 // the same as building them afresh.
-#include "core/scene/compile.h"
+#include "core/compiler/compile.h"
 
 #include "stroke_fixtures.h"
 

@@ -1,7 +1,7 @@
 // Stroke emitters through compile_scene: the example stroke scenes render
 // without a non-finite value, strokes change the image, and emitter errors
 // name the emitter.
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 #include "support/render_helpers.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // A SAX handler that builds the DOM itself, because nlohmann's own DOM parser turns
 // a number overflow (1e400) into an exception without a position and silently keeps
 // the last of duplicate keys; here both become error lines naming where they are.
-#include "core/scene/json_syntax.h"
+#include "core/document/json_syntax.h"
 
 #include <algorithm>
 #include <string>

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "core/math/types.h"
-#include "core/scene/npr_desc.h"
-#include "core/scene/params.h"
+#include "core/document/npr_desc.h"
+#include "core/document/params.h"
 
 #include <array>
 #include <filesystem>

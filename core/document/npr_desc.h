@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/math/types.h"
-#include "core/scene/params.h"
+#include "core/document/params.h"
 
 #include <array>
 #include <string>

@@ -1,9 +1,9 @@
 // Document-wide checks. Asset paths are found generically: a visitor over every
 // struct's visit_params picks out ParamKind::path fields, so a new texture or shape
 // type with a file is checked without a change here.
-#include "core/scene/scene_checks.h"
+#include "core/document/scene_checks.h"
 
-#include "core/scene/tagged_variant.h"
+#include "core/document/tagged_variant.h"
 
 #include <algorithm>
 #include <array>

@@ -1,8 +1,8 @@
 // Finds path fields the way scene_checks does, through visit_params, so a new
 // asset type needs no change here.
-#include "core/scene/asset_paths.h"
+#include "core/document/asset_paths.h"
 
-#include "core/scene/tagged_variant.h"
+#include "core/document/tagged_variant.h"
 
 #include <string>
 #include <type_traits>

@@ -1,11 +1,11 @@
 // The generic scene reader: one visitor over visit_params reads and checks every
 // field of every struct, so its messages come from the same Param list as the editor's
 // widgets. Checks that span the document (names, references, files) are in scene_checks.
-#include "core/scene/json_read.h"
+#include "core/document/json_read.h"
 
-#include "core/scene/json_syntax.h"
-#include "core/scene/scene_checks.h"
-#include "core/scene/tagged_variant.h"
+#include "core/document/json_syntax.h"
+#include "core/document/scene_checks.h"
+#include "core/document/tagged_variant.h"
 
 #include <algorithm>
 #include <charconv>

@@ -6,7 +6,7 @@
 #include "core/geometry/embree_scene.h"
 #include "core/lights/light.h"
 #include "core/materials/material.h"
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <string>
 #include <vector>

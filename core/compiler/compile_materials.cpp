@@ -1,7 +1,7 @@
 // Material compilation. Mixes refer to other materials by name, possibly to ones
 // later in the list, so they are compiled last, in dependency order, and a cycle
 // is an error rather than a loop.
-#include "core/scene/compile_materials.h"
+#include "core/compiler/compile_materials.h"
 
 #include "core/image/image_io.h"
 

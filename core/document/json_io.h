@@ -4,8 +4,8 @@
 #pragma once
 
 #include "core/base/cancel.h"
-#include "core/scene/desc.h"
-#include "core/scene/error_log.h"
+#include "core/document/desc.h"
+#include "core/document/error_log.h"
 
 #include <nlohmann/json_fwd.hpp>
 

@@ -1,13 +1,13 @@
 // Scene file input and output: reading files without throwing, and saving through
 // core/io's atomic replacement so an interrupted save never destroys the previous scene.
-#include "core/scene/json_io.h"
+#include "core/document/json_io.h"
 
 #include "core/io/atomic_file.h"
-#include "core/scene/asset_paths.h"
-#include "core/scene/error_log.h"
-#include "core/scene/json_read.h"
-#include "core/scene/json_syntax.h"
-#include "core/scene/json_write.h"
+#include "core/document/asset_paths.h"
+#include "core/document/error_log.h"
+#include "core/document/json_read.h"
+#include "core/document/json_syntax.h"
+#include "core/document/json_write.h"
 
 #include <nlohmann/json.hpp>
 

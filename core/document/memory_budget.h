@@ -4,7 +4,7 @@
 // per-item costs are measured; docs/architecture.md says how.
 #pragma once
 
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <cstdint>
 #include <string>

@@ -2,11 +2,11 @@
 // resident memory of inkray-render over scenes that scale one item at a time
 // (scripts/measure_memory_costs prints them; measured figures in the comments),
 // rounded up, so the estimate errs high.
-#include "core/scene/memory_budget.h"
+#include "core/document/memory_budget.h"
 
 #include "core/image/image_header.h"
-#include "core/scene/error_log.h"
-#include "core/scene/scene_checks.h"
+#include "core/document/error_log.h"
+#include "core/document/scene_checks.h"
 
 #include <algorithm>
 #include <cstdio>

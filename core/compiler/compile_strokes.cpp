@@ -1,12 +1,12 @@
 // Stroke emitters -> ribbon meshes with brush alpha, built before the scene's
 // BVH is committed so the strokes are traced like any other surface.
-#include "core/scene/compile_strokes.h"
+#include "core/compiler/compile_strokes.h"
 
 #include "core/npr/strokes/brush.h"
 #include "core/npr/strokes/stroke_color.h"
 #include "core/npr/strokes/stroke_mesh.h"
 #include "core/npr/strokes/stroke_placement.h"
-#include "core/scene/json_write.h"
+#include "core/document/json_write.h"
 
 #include <map>
 #include <mutex>

@@ -3,8 +3,8 @@
 // on a document it has changed as well as the reader on a file it has read.
 #pragma once
 
-#include "core/scene/desc.h"
-#include "core/scene/error_log.h"
+#include "core/document/desc.h"
+#include "core/document/error_log.h"
 
 #include <filesystem>
 #include <string>

@@ -1,8 +1,8 @@
 // The generic scene writer: a visitor over visit_params turns each field into JSON
 // by its C++ type (and, for choices, its Param's name table).
-#include "core/scene/json_write.h"
+#include "core/document/json_write.h"
 
-#include "core/scene/tagged_variant.h"
+#include "core/document/tagged_variant.h"
 
 #include <algorithm>
 #include <charconv>

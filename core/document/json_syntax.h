@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/base/cancel.h"
-#include "core/scene/error_log.h"
+#include "core/document/error_log.h"
 
 #include <nlohmann/json.hpp>
 

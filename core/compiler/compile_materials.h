@@ -2,7 +2,7 @@
 // with textures loaded once per file.
 #pragma once
 
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 // OBJ loading in two steps: a line check of our own, because tinyobjloader skips
 // garbage silently and only warns about bad indices (then reads out of bounds), and
 // tinyobjloader itself for parsing and ear-clipping triangulation.
-#include "core/scene/obj_loader.h"
+#include "core/geometry/obj_loader.h"
 
 #include <tiny_obj_loader.h>
 

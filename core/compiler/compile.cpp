@@ -1,11 +1,11 @@
-#include "core/scene/compile.h"
+#include "core/compiler/compile.h"
 
 #include "core/lights/light_sampling.h"
-#include "core/scene/compile_materials.h"
-#include "core/scene/compile_strokes.h"
-#include "core/scene/memory_budget.h"
-#include "core/scene/obj_loader.h"
-#include "core/scene/scene_checks.h"
+#include "core/compiler/compile_materials.h"
+#include "core/compiler/compile_strokes.h"
+#include "core/document/memory_budget.h"
+#include "core/geometry/obj_loader.h"
+#include "core/document/scene_checks.h"
 
 #include <cmath>
 #include <cstdio>

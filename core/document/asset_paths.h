@@ -3,7 +3,7 @@
 // be rewritten or the moved scene no longer finds its files.
 #pragma once
 
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <filesystem>
 

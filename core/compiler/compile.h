@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/base/cancel.h"
-#include "core/scene/render_scene.h"
+#include "core/world/render_scene.h"
 
 #include <cstdint>
 #include <memory>

@@ -3,7 +3,7 @@
 // unset optional names and paths are left out (the reader takes absent as unset).
 #pragma once
 
-#include "core/scene/desc.h"
+#include "core/document/desc.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,0 +1,19 @@
+// FirstHit: what the path tracer reports of a camera sample's first hit, for
+// the film's AOVs. Its own header so the film (above the integrator) includes
+// it, and the integrator needs nothing of the film.
+#pragma once
+
+#include "core/math/types.h"
+
+namespace inkray {
+
+// What the camera sample saw at its first hit.
+struct FirstHit {
+  Color albedo{0.f};
+  Normal3 normal{0.f};
+  float depth = 0.f;  // distance along the camera's forward axis
+  int object = -1;    // -1 where the sample escaped
+  int material = -1;
+};
+
+}  // namespace inkray
