@@ -85,7 +85,7 @@ RgbImage reference_image(const Options& opt, const std::shared_ptr<const RenderS
 // rays, cosine-distributed bounces and one shadow ray per bounce towards a
 // random scene point. Returns rays per second.
 double bare_embree_rate(const RenderScene& scene, int threads, double seconds) {
-  ThreadPool pool(threads);
+  ThreadBudget pool(threads);
   const int w = scene.settings.width, h = scene.settings.height;
   std::vector<uint64_t> rays(size_t(pool.size()), 0);
   const auto t0 = Clock::now();

@@ -3,8 +3,8 @@
 // strokes sized to keep the object covered; per count: stroke build time (and
 // its placement and growth + mesh parts), triangles, stroke geometry memory,
 // render time per spp at 960x540 and peak RSS.
+#include "core/base/parallel.h"
 #include "core/npr/strokes/brush.h"
-#include "core/npr/strokes/parallel_for.h"
 #include "core/npr/strokes/stroke_color.h"
 #include "core/npr/strokes/stroke_mesh.h"
 #include "core/npr/strokes/stroke_placement.h"
@@ -91,9 +91,9 @@ SceneDesc bench_scene(const Options& opt, int count) {
   return desc;
 }
 
-std::shared_ptr<const RenderScene> compile_or_exit(const SceneDesc& desc, double* seconds) {
+std::shared_ptr<const RenderScene> compile_or_exit(ThreadBudget& build, const SceneDesc& desc, double* seconds) {
   const auto t0 = Clock::now();
-  CompileResult c = compile_scene(desc);
+  CompileResult c = build.run([&] { return compile_scene(desc); });
   *seconds = seconds_since(t0);
   if (!c.scene) {
     for (const auto& e : c.errors) std::fprintf(stderr, "error: %s\n", e.c_str());
@@ -151,10 +151,11 @@ double seconds_per_spp(const std::shared_ptr<const RenderScene>& scene, const Op
 }
 
 int run(const Options& opt) {
-  stroke_build_thread_limit = unsigned(opt.build_threads);
-  std::printf("strokes on a %s at 960x540; render threads %d, stroke build threads %u, compile median of %d, "
+  // Compiles (stroke build and BVH) and the timed parts run within this budget.
+  ThreadBudget build(opt.build_threads);
+  std::printf("strokes on a %s at 960x540; render threads %d, stroke build threads %d, compile median of %d, "
               "render median of %d passes\n\n",
-              opt.mesh ? "torus knot mesh" : "sphere", opt.threads, stroke_build_threads(), opt.repeats, opt.passes);
+              opt.mesh ? "torus knot mesh" : "sphere", opt.threads, build.size(), opt.repeats, opt.passes);
   std::printf("%8s %10s %10s %10s %10s %10s %10s %10s %10s %10s %10s\n", "strokes", "build ms", "brush ms",
               "place ms", "grow ms", "compile ms", "recompile", "triangles", "geom MiB", "ms/spp", "peak MiB");
   double base_compile = 0.0;
@@ -169,15 +170,15 @@ int run(const Options& opt) {
     for (int r = 0; r < opt.repeats; ++r) {
       for (StrokeEmitterDesc& e : fresh.strokes) e.seed = desc.strokes.empty() ? 0 : desc.strokes.front().seed + r;
       double s = 0.0;
-      scene = compile_or_exit(fresh, &s);
+      scene = compile_or_exit(build, fresh, &s);
       compiles.push_back(s);
     }
     double recompile_s = 0.0;
-    scene = compile_or_exit(fresh, &recompile_s);
+    scene = compile_or_exit(build, fresh, &recompile_s);
     const double compile_s = median(compiles);
     if (count == 0) base_compile = compile_s;
     double brush_s = 0.0, place_s = 0.0, grow_s = 0.0;
-    if (count > 0) time_parts(*scene, desc.strokes.front(), &brush_s, &place_s, &grow_s);
+    if (count > 0) build.run([&] { time_parts(*scene, desc.strokes.front(), &brush_s, &place_s, &grow_s); });
     size_t triangles = 0;
     const size_t bytes = stroke_bytes(*scene, &triangles);
     const double spp_s = seconds_per_spp(scene, opt);

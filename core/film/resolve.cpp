@@ -12,7 +12,7 @@ namespace {
 
 // The filter radius is given for a 1080-line image, so the look holds at any
 // resolution: `full_height` is the image's, or the full image's for a crop.
-RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadPool* pool, const Cancel& cancel,
+RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadBudget* pool, const Cancel& cancel,
                          int full_height) {
   if (settings.painterly == PainterlyFilter::none) return image;
   PainterlyFilterParams params;
@@ -46,14 +46,14 @@ void composite_lines(const Film& film, const OutlineDesc& outlines, RgbImage& im
 }  // namespace
 
 RgbImage resolve_final(const Film& film, const RenderSettings& settings, const OutlineDesc& outlines,
-                       ThreadPool* pool, const Cancel& cancel) {
+                       ThreadBudget* pool, const Cancel& cancel) {
   RgbImage image = apply_painterly(film.resolve(), settings, pool, cancel, film.height());
   if (image.pixels.empty()) return image;  // the filter was cut short
   if (film.has_lines()) composite_lines(film, outlines, image);
   return image;
 }
 
-double estimate_painterly_seconds(const RenderSettings& settings, int width, int height, ThreadPool* pool) {
+double estimate_painterly_seconds(const RenderSettings& settings, int width, int height, ThreadBudget* pool) {
   if (settings.painterly == PainterlyFilter::none || width <= 0 || height <= 0) return 0.0;
   // A crop with edges in both directions, so the anisotropic filter's ellipses take
   // every shape; a pixel's cost depends on the radius, hardly on the picture.

@@ -52,8 +52,9 @@ float judged_value(float linear) {
 }
 
 // True when every row ran; rows not yet started are skipped once cancel is requested.
+// Without a budget the rows run in the caller's arena. Rows write only their own pixels.
 template <class RowFn>
-bool for_rows(int height, ThreadPool* pool, const RowFn& row_fn, const Cancel& cancel = {}) {
+bool for_rows(int height, ThreadBudget* pool, const RowFn& row_fn, const Cancel& cancel = {}) {
   std::atomic<int> skipped{0};
   const auto row = [&](int y) {
     if (cancel.requested()) {
@@ -65,12 +66,14 @@ bool for_rows(int height, ThreadPool* pool, const RowFn& row_fn, const Cancel& c
   if (pool) {
     pool->parallel_for(height, [&](int y, int) { row(y); });
   } else {
-    for (int y = 0; y < height; ++y) row(y);
+    parallel_for_chunks(size_t(std::max(height, 0)), 1, [&](size_t begin, size_t end) {
+      for (size_t y = begin; y < end; ++y) row(int(y));
+    });
   }
   return skipped.load() == 0;
 }
 
-Source prepare_source(const RgbImage& image, ThreadPool* pool) {
+Source prepare_source(const RgbImage& image, ThreadBudget* pool) {
   Source source{std::vector<Texel>(image.pixels.size()), image.width, image.height};
   std::vector<Texel>& texels = source.texels;
   for_rows(image.height, pool, [&](int y) {
@@ -293,7 +296,7 @@ std::vector<Tap<N>> disc_taps(const SectorTable& table, float radius) {
 }
 
 template <int N>
-bool kuwahara_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadPool* pool,
+bool kuwahara_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadBudget* pool,
                    const Cancel& cancel, RgbImage& out) {
   const std::vector<Tap<N>> taps = disc_taps<N>(table, radius);
   return for_rows(source.height, pool, [&](int y) {
@@ -310,7 +313,7 @@ bool kuwahara_rows(const Source& source, const SectorTable& table, float radius,
 
 // Per channel Sobel gradients of the judged copy, summed into (E, F, G) =
 // (fx.fx, fx.fy, fy.fy), then Gaussian-smoothed so the orientation is stable.
-std::vector<Vec3> structure_tensor(const Source& source, ThreadPool* pool) {
+std::vector<Vec3> structure_tensor(const Source& source, ThreadBudget* pool) {
   const int width = source.width, height = source.height;
   const auto judged = [&](int x, int y) { return source.clamped(x, y).judged; };
   std::vector<Vec3> tensor(source.texels.size());
@@ -415,7 +418,7 @@ Color filter_ellipse(const Source& source, int x, int y, const Ellipse& ellipse,
 }
 
 template <int N>
-bool anisotropic_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadPool* pool,
+bool anisotropic_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadBudget* pool,
                       const Cancel& cancel, RgbImage& out) {
   const std::vector<Vec3> tensor = structure_tensor(source, pool);
   const Weights<N> centre_weights = table.weights<N>(Vec2(0.f));
@@ -434,7 +437,7 @@ float clamp_sharpness(float q) { return std::isfinite(q) ? std::max(q, 0.f) : 8.
 
 }  // namespace
 
-RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params, ThreadPool* pool,
+RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params, ThreadBudget* pool,
                          const Cancel& cancel) {
   RgbImage out{image.width, image.height, std::vector<Color>(image.pixels.size())};
   if (image.width <= 0 || image.height <= 0) return out;
@@ -450,7 +453,7 @@ RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& par
 }
 
 RgbImage anisotropic_kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params,
-                                     ThreadPool* pool, const Cancel& cancel) {
+                                     ThreadBudget* pool, const Cancel& cancel) {
   RgbImage out{image.width, image.height, std::vector<Color>(image.pixels.size())};
   if (image.width <= 0 || image.height <= 0) return out;
   const int sectors = clamp_sectors(params.sectors);

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "core/base/cancel.h"
+#include "core/base/parallel.h"
 #include "core/image/rgb_image.h"
-#include "core/render/thread_pool.h"
 
 namespace inkray {
 
@@ -21,19 +21,19 @@ struct PainterlyFilterParams {
 // variance summed over channels, in 8-bit code values (as in the papers'
 // implementations, so q = 8 behaves as published). Samples beyond the border
 // repeat the edge pixel. Non-finite input pixels are read as black, so they
-// never spread. Rows run on the pool when one is given; the result is
-// bit-identical with and without it. Once `cancel` is requested no further row is
-// filtered (at large radii a filter takes seconds) and, if any row was left, the
-// result is an empty image.
+// never spread. Rows run in parallel, within `pool`'s threads when one is
+// given, else in the caller's arena; the result is bit-identical at any thread
+// count. Once `cancel` is requested no further row is filtered (at large radii a
+// filter takes seconds) and, if any row was left, the result is an empty image.
 
 // Generalized Kuwahara (Papari, Petkov, Campisi 2007): N overlapping sectors
 // of a disc with smooth weights.
 RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params,
-                         ThreadPool* pool = nullptr, const Cancel& cancel = {});
+                         ThreadBudget* pool = nullptr, const Cancel& cancel = {});
 
 // Anisotropic Kuwahara (Kyprianidis, Kang, Döllner 2009): the disc becomes an
 // ellipse stretched along the local flow of the smoothed structure tensor.
 RgbImage anisotropic_kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params,
-                                     ThreadPool* pool = nullptr, const Cancel& cancel = {});
+                                     ThreadBudget* pool = nullptr, const Cancel& cancel = {});
 
 }  // namespace inkray

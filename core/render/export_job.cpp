@@ -56,9 +56,12 @@ void ExportJob::run(ExportRequest request) {
     done_.store(true);
     return;
   }
+  // The session first: the build (strokes, BVH) then stays within the export's
+  // threads, leaving the rest to the editor's viewport.
+  RenderSession session(request.threads);
   CompileOptions options;
   options.cancel = Cancel(&cancelled_);  // a huge scene's build stops at Cancel too
-  CompileResult compiled = compile_scene(request.scene, options);
+  CompileResult compiled = session.pool().run([&] { return compile_scene(request.scene, options); });
   if (!compiled.scene) {
     fail(compiled.errors.empty() ? "the scene did not compile" : compiled.errors.front());
     done_.store(true);
@@ -66,7 +69,6 @@ void ExportJob::run(ExportRequest request) {
   }
   AovSet aovs;
   for (Aov a : request.aovs) aovs.add(a);
-  RenderSession session(request.threads);
   session.set_scene(compiled.scene, aovs);
   {
     std::lock_guard lock(mutex_);

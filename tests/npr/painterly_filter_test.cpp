@@ -1,5 +1,5 @@
 // The painterly filters: flat stays flat, edges stay sharp, noise goes, mirror
-// symmetry, thread-pool determinism, flow-aligned smoothing, non-finite input.
+// symmetry, thread-count determinism, flow-aligned smoothing, non-finite input.
 // Set INKRAY_WRITE_FILTER_DEMO to also write before/after PNGs to /tmp.
 #include "core/npr/painterly_filter.h"
 
@@ -21,7 +21,7 @@
 namespace inkray {
 namespace {
 
-using Filter = RgbImage (*)(const RgbImage&, const PainterlyFilterParams&, ThreadPool*);
+using Filter = RgbImage (*)(const RgbImage&, const PainterlyFilterParams&, ThreadBudget*);
 
 struct NamedFilter {
   const char* name;
@@ -29,9 +29,9 @@ struct NamedFilter {
 };
 // Never cancelled here (compile_cancel_test covers that).
 const NamedFilter kFilters[] = {
-    {"kuwahara", [](const RgbImage& i, const PainterlyFilterParams& p, ThreadPool* t) { return kuwahara_filter(i, p, t); }},
+    {"kuwahara", [](const RgbImage& i, const PainterlyFilterParams& p, ThreadBudget* t) { return kuwahara_filter(i, p, t); }},
     {"anisotropic",
-     [](const RgbImage& i, const PainterlyFilterParams& p, ThreadPool* t) { return anisotropic_kuwahara_filter(i, p, t); }}};
+     [](const RgbImage& i, const PainterlyFilterParams& p, ThreadBudget* t) { return anisotropic_kuwahara_filter(i, p, t); }}};
 
 RgbImage make_image(int width, int height, const std::function<Color(int, int)>& pixel) {
   RgbImage image{width, height, std::vector<Color>(size_t(width) * size_t(height))};
@@ -135,15 +135,17 @@ TEST(PainterlyFilter, MirroringTheInputMirrorsTheOutput) {
     }
 }
 
-TEST(PainterlyFilter, ThreadPoolGivesIdenticalResult) {
+TEST(PainterlyFilter, AnyThreadCountGivesIdenticalResult) {
   const RgbImage image = structured_test_image(67, 45, 11);
-  ThreadPool pool(4);
+  ThreadBudget one(1), four(4);
   for (const NamedFilter& f : kFilters) {
-    const RgbImage serial = f.filter(image, {}, nullptr);
-    const RgbImage parallel = f.filter(image, {}, &pool);
-    ASSERT_EQ(serial.pixels.size(), parallel.pixels.size());
-    for (size_t i = 0; i < serial.pixels.size(); ++i)
-      ASSERT_EQ(serial.pixels[i], parallel.pixels[i]) << f.name;
+    const RgbImage serial = f.filter(image, {}, &one);
+    // Without a budget the rows run in the caller's arena: every hardware thread.
+    for (const RgbImage& parallel : {f.filter(image, {}, &four), f.filter(image, {}, nullptr)}) {
+      ASSERT_EQ(serial.pixels.size(), parallel.pixels.size());
+      for (size_t i = 0; i < serial.pixels.size(); ++i)
+        ASSERT_EQ(serial.pixels[i], parallel.pixels[i]) << f.name;
+    }
   }
 }
 
@@ -232,9 +234,10 @@ TEST(PainterlyFilter, TinyRadiusAndTinyImages) {
 // Prints only: timings depend on the machine.
 TEST(PainterlyFilter, TimingOnOneCore) {
   const RgbImage image = structured_test_image(960, 540, 2);
+  ThreadBudget one(1);
   for (const NamedFilter& f : kFilters) {
     const auto start = std::chrono::steady_clock::now();
-    const RgbImage out = f.filter(image, {}, nullptr);
+    const RgbImage out = f.filter(image, {}, &one);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::printf("[ info ] %s 960x540 radius 4, one thread: %.0f ms\n", f.name, ms);
@@ -303,7 +306,7 @@ TEST(PainterlyFilter, WritesDemoWhenAsked) {
   std::vector<RgbImage> images = {demo_pattern(480, 320)};
   PainterlyFilterParams params;
   params.radius = 6.f;
-  ThreadPool pool(0);
+  ThreadBudget pool(0);
   for (const NamedFilter& f : kFilters) images.push_back(f.filter(images[0], params, &pool));
   const char* names[] = {"input", "kuwahara", "anisotropic"};
   std::string error;

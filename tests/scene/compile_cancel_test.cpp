@@ -64,8 +64,8 @@ TEST(CompileCancel, PainterlyFiltersStopFilteringRows) {
   const Cancel cancel(&flag);
   PainterlyFilterParams params;
   params.radius = 8.f;
-  ThreadPool pool(2);
-  for (ThreadPool* p : {static_cast<ThreadPool*>(nullptr), &pool}) {
+  ThreadBudget pool(2);
+  for (ThreadBudget* p : {static_cast<ThreadBudget*>(nullptr), &pool}) {
     for (const RgbImage& out :
          {kuwahara_filter(image, params, p, cancel), anisotropic_kuwahara_filter(image, params, p, cancel)}) {
       // Cut short, the result is empty rather than a partly filtered image.

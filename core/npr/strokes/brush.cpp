@@ -2,9 +2,9 @@
 // image module reads RGB only), baked into alpha masks.
 #include "core/npr/strokes/brush.h"
 
+#include "core/base/parallel.h"
 #include "core/image/image_header.h"
 #include "core/math/hash.h"
-#include "core/npr/strokes/parallel_for.h"
 
 #include <stb_image.h>
 
@@ -41,7 +41,7 @@ AlphaMask procedural_mask(const StrokeEmitterDesc& e) {
   mask.texels.resize(size_t(mask.variants) * size_t(mask.width) * size_t(mask.height));
   // Rows of every variant in parallel: the bake would otherwise cost more than a
   // thousand strokes' geometry.
-  parallel_chunks(size_t(mask.variants) * size_t(mask.height), 64, [&](size_t begin, size_t end) {
+  parallel_for_chunks(size_t(mask.variants) * size_t(mask.height), 64, [&](size_t begin, size_t end) {
     for (size_t row = begin; row < end; ++row) {
       const int layer = int(row / size_t(mask.height)), y = int(row % size_t(mask.height));
       for (int x = 0; x < mask.width; ++x) {

@@ -1,10 +1,10 @@
 // Stroke colours from the material under each root.
 #include "core/npr/strokes/stroke_color.h"
 
+#include "core/base/parallel.h"
 #include "core/image/image_io.h"
 #include "core/math/color_space.h"
 #include "core/math/hash.h"
-#include "core/npr/strokes/parallel_for.h"
 
 namespace inkray {
 namespace {
@@ -33,7 +33,7 @@ std::vector<Color> stroke_colors(std::span<const Material> materials, uint32_t m
                                  std::span<const SurfacePoint> roots, const StrokeEmitterDesc& e) {
   const uint32_t seed = hash_combine(uint32_t(e.seed), kColorStream);
   std::vector<Color> colors(roots.size());
-  parallel_chunks(roots.size(), 8192, [&](size_t begin, size_t end) {
+  parallel_for_chunks(roots.size(), 8192, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const auto u = [&](uint32_t dim) { return u32_to_unit_float(hash_combine(seed, uint32_t(i), dim)); };
       const Color base = root_color(materials, material, roots[i], u(0));

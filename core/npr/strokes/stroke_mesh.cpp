@@ -2,10 +2,10 @@
 // per station, lifted by the offset and a bound on how far chords dip.
 #include "core/npr/strokes/stroke_mesh.h"
 
+#include "core/base/parallel.h"
 #include "core/math/float_error.h"
 #include "core/math/frame.h"
 #include "core/math/hash.h"
-#include "core/npr/strokes/parallel_for.h"
 #include "core/npr/strokes/stroke_growth.h"
 
 #include <algorithm>
@@ -123,7 +123,7 @@ StrokeGeometry build_stroke_mesh(const StrokeSurface& surface, std::span<const S
   mesh.indices.resize(count * 6 * segments);
   const RibbonWriter writer{surface, emitter, out.offset, hash_combine(uint32_t(emitter.seed), kGrowthStream), mesh};
   std::atomic<float> max_lift{0.f};
-  parallel_chunks(count, 2048, [&](size_t begin, size_t end) {
+  parallel_for_chunks(count, 2048, [&](size_t begin, size_t end) {
     std::vector<SurfacePoint> stations, sides;
     std::vector<float> dips;
     float local = 0.f;

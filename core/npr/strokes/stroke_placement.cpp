@@ -1,8 +1,8 @@
 // Blue-noise root placement by progressive dart throwing with a hash grid.
 #include "core/npr/strokes/stroke_placement.h"
 
+#include "core/base/parallel.h"
 #include "core/math/hash.h"
-#include "core/npr/strokes/parallel_for.h"
 
 #include <cmath>
 #include <limits>
@@ -100,7 +100,7 @@ std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count
   const uint32_t stream = hash_combine(seed, kPlacementStream);
   const size_t m = candidate_count(count);
   std::vector<Point3> candidates(m);
-  parallel_chunks(m, 16384, [&](size_t begin, size_t end) {
+  parallel_for_chunks(m, 16384, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) candidates[i] = surface.sample(stream, uint32_t(i)).p;
   }, cancel);
 
@@ -136,7 +136,7 @@ std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count
   }
 
   std::vector<SurfacePoint> roots(count);
-  parallel_chunks(count, 8192, [&](size_t begin, size_t end) {
+  parallel_for_chunks(count, 8192, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) roots[i] = surface.sample(stream, accepted[i]);
   }, cancel);
   if (cancel.requested()) return {};

@@ -1,6 +1,6 @@
 // Ribbon meshes: the right size, bit-identical for a seed at any thread count,
 // and every vertex above the surface it lies on by no more than max_lift.
-#include "core/npr/strokes/parallel_for.h"
+#include "core/base/parallel.h"
 #include "core/npr/strokes/stroke_mesh.h"
 #include "core/npr/strokes/stroke_placement.h"
 #include "npr/strokes/stroke_fixtures.h"
@@ -26,12 +26,6 @@ bool same_mesh(const TriangleMesh& a, const TriangleMesh& b) {
          a.indices == b.indices;
 }
 
-// Restores the build thread limit when a test ends.
-struct ThreadLimit {
-  explicit ThreadLimit(unsigned n) { stroke_build_thread_limit = n; }
-  ~ThreadLimit() { stroke_build_thread_limit = 0; }
-};
-
 TEST(StrokeMesh, TwoVerticesPerStationTwoTrianglesPerSegment) {
   const StrokeSurface surface = surface_of(testing::test_sphere());
   StrokeEmitterDesc e = test_emitter(300);
@@ -49,19 +43,9 @@ TEST(StrokeMesh, SameSeedGivesBitIdenticalMeshAtAnyThreadCount) {
   const StrokeSurface box = surface_of(testing::test_box());
   // Enough strokes for several parallel chunks.
   const StrokeEmitterDesc e = test_emitter(5000, 21);
-  StrokeGeometry one, two, four;
-  {
-    ThreadLimit limit(1);
-    one = build(sphere, e);
-  }
-  {
-    ThreadLimit limit(2);
-    two = build(sphere, e);
-  }
-  {
-    ThreadLimit limit(4);
-    four = build(sphere, e);
-  }
+  // Placement and meshing run in the caller's arena: a budget's run() caps their threads.
+  const auto build_on = [&](int threads) { return ThreadBudget(threads).run([&] { return build(sphere, e); }); };
+  const StrokeGeometry one = build_on(1), two = build_on(2), four = build_on(4);
   EXPECT_TRUE(same_mesh(one.mesh, two.mesh));
   EXPECT_TRUE(same_mesh(one.mesh, four.mesh));
   EXPECT_EQ(one.max_lift, four.max_lift);
