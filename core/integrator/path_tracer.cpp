@@ -3,6 +3,7 @@
 // else (see toon_shading.h); mixes are resolved to one side per sample.
 #include "core/integrator/path_tracer.h"
 
+#include "core/base/overloaded.h"
 #include "core/integrator/toon_shading.h"
 #include "core/lights/light_sampling.h"
 #include "core/math/frame.h"
@@ -104,6 +105,63 @@ bool scatter(const Sampler& sampler, const Bsdf& bsdf, const Frame& frame, const
   return !is_black(st.beta);
 }
 
+// One hit of the path, seen from the side the ray arrived on.
+struct Bounce {
+  const SurfaceInteraction& si;
+  Vec3 wo;     // towards the viewer, normalised
+  Normal3 ns;  // faces the viewer unless the surface transmits
+  LightReference ref;
+  uint32_t pairs;  // the first sample pair of this bounce
+  int depth;
+};
+
+// Emission of the emitter the path ended on, weighted against light sampling.
+void add_emission(const RenderScene& scene, const Bounce& b, const Material& material, bool skip_lights,
+                  const PathState& st, PathResult& result) {
+  const int light = scene.objects[b.si.object].light;
+  const Color le = material_emission(material, b.si, glm::dot(b.wo, b.si.ng));
+  if (!is_black(le) && !(skip_lights && light >= 0))
+    result.radiance += st.beta * le * emitter_weight(scene, light, st, st.ray.d, b.si);
+}
+
+// Next-event estimation and a sampled bounce through the material's BSDF; false ends the path.
+bool continue_by_bsdf(const RenderScene& scene, const Sampler& sampler, const Bounce& b,
+                      const Material& material, PathState& st, PathResult& result) {
+  if (b.depth >= scene.settings.max_depth) return false;
+  const std::optional<Bsdf> bsdf = material_bsdf(material, b.si);
+  if (!bsdf) return false;
+  const Vec2 u_choice = sampler.get_pair(b.pairs);  // x: which light, y: which lobe
+  const Frame frame = Frame::from_z(b.ns);
+  const Vec3 wo_local = frame.to_local(b.wo);
+  if (!scene.light_selection.empty() && !bsdf_is_delta(*bsdf))
+    add_direct_light(scene, *bsdf, frame, wo_local, b.ref, u_choice.x, sampler.get_pair(b.pairs + 1), st,
+                     result);
+  return scatter(sampler, *bsdf, frame, wo_local, b.si, b.ref, u_choice.y, sampler.get_pair(b.pairs + 2),
+                 b.depth, st);
+}
+
+// A toon surface showing its cel look; false ends the path. When it receives
+// indirect light the path goes on to gather it.
+bool shade_toon(const RenderScene& scene, const Sampler& sampler, const Bounce& b, const ToonMaterial& toon,
+                const Material& material, PathState& st, PathResult& result) {
+  const ToonHit th{&b.si, b.wo, b.ns, b.ref, st.path_length, b.depth};
+  const ToonShade shade = toon_shade(scene, toon, th, sampler, &result.rays);
+  result.radiance += st.beta * shade.radiance;
+  // Indirect light adds to the bands; the light the bands show is not gathered again.
+  if (!st.specular_chain || !toon.receive_indirect || b.depth >= scene.settings.max_depth) return false;
+  const Frame frame = Frame::from_z(b.ns);
+  const Bsdf lambert = *material_bsdf(material, b.si);
+  if (!scatter(sampler, lambert, frame, frame.to_local(b.wo), b.si, b.ref, sampler.get_pair(b.pairs).y,
+               sampler.get_pair(b.pairs + 2), b.depth, st))
+    return false;
+  // The bands show colour * E / E_ref whatever the lights' strength; indirect
+  // irradiance is measured in the same unit, so brighter lights do not wash
+  // the bands out with bounce light.
+  if (shade.reference > 0.f) st.beta /= shade.reference;
+  st.skip_lights = true;
+  return true;
+}
+
 }  // namespace
 
 PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray& camera_ray,
@@ -111,7 +169,6 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
   PathResult result;
   PathState st;
   st.ray = camera_ray;
-  const bool sample_lights = !scene.light_selection.empty();
 
   for (int depth = 0;; ++depth) {
     Hit hit;
@@ -128,24 +185,12 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
     const bool skip_lights = std::exchange(st.skip_lights, false);
 
     uint32_t material_index = scene.objects[si.object].material;
-    if (std::holds_alternative<MixMaterial>(scene.materials[material_index])) {
+    if (material_flags(scene.materials[material_index]).is_mix) {
       material_index = resolve_mix(scene.materials, material_index, si, sampler.get_pair(pairs + 3).x);
       if (material_index == kNoMaterial) break;
     }
     const Material& material = scene.materials[material_index];
     if (depth == 0 && first_hit) record_first_hit(scene, camera, si, material, first_hit);
-
-    if (std::holds_alternative<EmissiveMaterial>(material)) {
-      const int light = scene.objects[si.object].light;
-      const Color le = material_emission(material, si, glm::dot(wo, si.ng));
-      if (!is_black(le) && !(skip_lights && light >= 0))
-        result.radiance += st.beta * le * emitter_weight(scene, light, st, st.ray.d, si);
-      break;
-    }
-    if (const auto* unlit = std::get_if<UnlitMaterial>(&material)) {
-      result.radiance += st.beta * texture_eval(unlit->color, si.uv);
-      break;
-    }
 
     // Opaque surfaces are two-sided: face them towards the viewer. Surfaces
     // that transmit keep their orientation, which tells inside from outside.
@@ -154,40 +199,37 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
       ns = -ns;
       ng = -ng;
     }
-    const LightReference ref{si.p, si.p_error, ng};
-    const Vec2 u_choice = sampler.get_pair(pairs);  // x: which light, y: which lobe
+    const Bounce b{si, wo, ns, LightReference{si.p, si.p_error, ng}, pairs, depth};
 
-    const auto* toon = std::get_if<ToonMaterial>(&material);
-    if (toon && (st.specular_chain || !toon->bounce_indirect)) {
-      const ToonHit th{&si, wo, ns, ref, st.path_length, depth};
-      const ToonShade shade = toon_shade(scene, *toon, th, sampler, &result.rays);
-      result.radiance += st.beta * shade.radiance;
-      // Indirect light adds to the bands; the light the bands show is not gathered again.
-      if (!st.specular_chain || !toon->receive_indirect || depth >= scene.settings.max_depth) break;
-      const Frame frame = Frame::from_z(ns);
-      const Bsdf lambert = *material_bsdf(material, si);
-      if (!scatter(sampler, lambert, frame, frame.to_local(wo), si, ref, u_choice.y,
-                   sampler.get_pair(pairs + 2), depth, st))
-        break;
-      // The bands show colour * E / E_ref whatever the lights' strength; indirect
-      // irradiance is measured in the same unit, so brighter lights do not wash
-      // the bands out with bounce light.
-      if (shade.reference > 0.f) st.beta /= shade.reference;
-      st.skip_lights = true;
-      continue;
-    }
-
-    if (depth >= scene.settings.max_depth) break;
-    const std::optional<Bsdf> bsdf = material_bsdf(material, si);
-    if (!bsdf) break;
-    const Frame frame = Frame::from_z(ns);
-    const Vec3 wo_local = frame.to_local(wo);
-    if (sample_lights && !bsdf_is_delta(*bsdf))
-      add_direct_light(scene, *bsdf, frame, wo_local, ref, u_choice.x, sampler.get_pair(pairs + 1), st,
-                       result);
-    if (!scatter(sampler, *bsdf, frame, wo_local, si, ref, u_choice.y, sampler.get_pair(pairs + 2), depth,
-                 st))
-      break;
+    // One case per kind of material: a new kind does not compile until the path
+    // loop says what it does there. False ends the path.
+    const auto by_bsdf = [&] { return continue_by_bsdf(scene, sampler, b, material, st, result); };
+    const bool go_on = std::visit(
+        Overloaded{
+            [&](const DiffuseMaterial&) { return by_bsdf(); },
+            [&](const ConductorMaterial&) { return by_bsdf(); },
+            [&](const DielectricMaterial&) { return by_bsdf(); },
+            [&](const EmissiveMaterial&) {
+              add_emission(scene, b, material, skip_lights, st, result);
+              return false;  // nothing scatters off an emitter
+            },
+            [&](const UnlitMaterial& m) {
+              result.radiance += st.beta * texture_eval(m.color, si.uv);  // its colour whatever the light
+              return false;
+            },
+            [&](const TransparentMaterial&) { return by_bsdf(); },
+            [&](const ToonMaterial& m) {
+              // Its cel look shows directly and through mirrors and glass; light
+              // bouncing off it sees a Lambertian of its colour.
+              if (st.specular_chain || !m.bounce_indirect)
+                return shade_toon(scene, sampler, b, m, material, st, result);
+              return by_bsdf();
+            },
+            // resolve_mix above never returns a mix.
+            [](const MixMaterial&) { return false; },
+        },
+        material);
+    if (!go_on) break;
   }
   return result;
 }

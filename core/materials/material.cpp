@@ -1,23 +1,48 @@
 // Material evaluation at a hit: BSDF, emission, albedo, and resolving mixes.
+// Each function visits with one case per kind of material and no catch-all, so
+// a new kind does not compile until every function says what it does for it.
 #include "core/materials/material.h"
+
+#include "core/base/overloaded.h"
 
 #include <algorithm>
 
 namespace inkray {
+namespace {
+
+// The emitter a material is, or null for a kind that sends out no light of its own.
+const EmissiveMaterial* emitter_of(const Material& material) {
+  using Emitter = const EmissiveMaterial*;
+  return std::visit(Overloaded{
+                        [](const DiffuseMaterial&) -> Emitter { return nullptr; },
+                        [](const ConductorMaterial&) -> Emitter { return nullptr; },
+                        [](const DielectricMaterial&) -> Emitter { return nullptr; },
+                        [](const EmissiveMaterial& m) -> Emitter { return &m; },
+                        // Its colour is what a ray sees, not light that reaches anything else.
+                        [](const UnlitMaterial&) -> Emitter { return nullptr; },
+                        [](const TransparentMaterial&) -> Emitter { return nullptr; },
+                        [](const ToonMaterial&) -> Emitter { return nullptr; },
+                        // Even over an emitter: resolve it first.
+                        [](const MixMaterial&) -> Emitter { return nullptr; },
+                    },
+                    material);
+}
+
+}  // namespace
 
 uint32_t resolve_mix(std::span<const Material> materials, uint32_t index, const SurfaceInteraction& si,
                      float u) {
   // Acyclic mixes reach a non-mix in fewer steps than there are materials.
   for (size_t steps = 0; steps <= materials.size() && index < materials.size(); ++steps) {
-    const auto* mix = std::get_if<MixMaterial>(&materials[index]);
-    if (!mix) return index;
-    float p = glm::clamp(luminance(texture_eval(mix->factor, si.uv)), 0.f, 1.f);
+    if (!material_flags(materials[index]).is_mix) return index;
+    const MixMaterial& mix = std::get<MixMaterial>(materials[index]);
+    float p = glm::clamp(luminance(texture_eval(mix.factor, si.uv)), 0.f, 1.f);
     if (p > 1.f - 1e-6f) p = 1.f;  // white's luminance rounds just below 1; factor 1 must be all b
     if (u < p) {
-      index = mix->b;
+      index = mix.b;
       u = std::min(u / p, kOneMinusEpsilon);
     } else {
-      index = mix->a;
+      index = mix.a;
       u = std::min((u - p) / (1.f - p), kOneMinusEpsilon);
     }
   }
@@ -25,54 +50,58 @@ uint32_t resolve_mix(std::span<const Material> materials, uint32_t index, const 
 }
 
 std::optional<Bsdf> material_bsdf(const Material& material, const SurfaceInteraction& si) {
-  if (const auto* m = std::get_if<DiffuseMaterial>(&material))
-    return LambertBsdf{si.color * texture_eval(m->albedo, si.uv)};
-  if (const auto* m = std::get_if<ConductorMaterial>(&material))
-    return ConductorBsdf{si.color * texture_eval(m->color, si.uv), m->alpha};
-  if (const auto* m = std::get_if<DielectricMaterial>(&material)) return m->bsdf;
-  if (const auto* m = std::get_if<TransparentMaterial>(&material)) return TransparentBsdf{m->tint};
-  if (const auto* m = std::get_if<ToonMaterial>(&material))
-    return LambertBsdf{si.color * texture_eval(m->color, si.uv)};
-  return std::nullopt;
+  using Result = std::optional<Bsdf>;
+  return std::visit(Overloaded{
+                        [&](const DiffuseMaterial& m) -> Result {
+                          return LambertBsdf{si.color * texture_eval(m.albedo, si.uv)};
+                        },
+                        [&](const ConductorMaterial& m) -> Result {
+                          return ConductorBsdf{si.color * texture_eval(m.color, si.uv), m.alpha};
+                        },
+                        [](const DielectricMaterial& m) -> Result { return m.bsdf; },
+                        // Paths end on an emitter: light leaves it, none bounces off it.
+                        [](const EmissiveMaterial&) -> Result { return std::nullopt; },
+                        // Shows its colour whatever the light: nothing to scatter.
+                        [](const UnlitMaterial&) -> Result { return std::nullopt; },
+                        [](const TransparentMaterial& m) -> Result { return TransparentBsdf{m.tint}; },
+                        // Light bouncing off a toon surface sees a Lambertian of its lit colour.
+                        [&](const ToonMaterial& m) -> Result {
+                          return LambertBsdf{si.color * texture_eval(m.color, si.uv)};
+                        },
+                        // A mix scatters as the side resolve_mix picks.
+                        [](const MixMaterial&) -> Result { return std::nullopt; },
+                    },
+                    material);
 }
 
 Color material_emission(const Material& material, const SurfaceInteraction& si, float cos_ng) {
-  const auto* m = std::get_if<EmissiveMaterial>(&material);
+  const EmissiveMaterial* m = emitter_of(material);
   if (!m || (!m->two_sided && cos_ng <= 0.f)) return Color(0.f);
   return m->strength * si.color * texture_eval(m->color, si.uv);
 }
 
 bool material_is_emissive(const Material& material) {
-  const auto* m = std::get_if<EmissiveMaterial>(&material);
+  const EmissiveMaterial* m = emitter_of(material);
   return m && m->strength > 0.f && max_component(texture_average(m->color)) > 0.f;
 }
 
 Color material_average_emission(const Material& material) {
-  const auto* m = std::get_if<EmissiveMaterial>(&material);
+  const EmissiveMaterial* m = emitter_of(material);
   return m ? m->strength * texture_average(m->color) : Color(0.f);
 }
 
 Color material_albedo(const Material& material, const SurfaceInteraction& si) {
   const Vec2 uv = si.uv;
   return std::visit(
-      [&](const auto& m) -> Color {
-        using T = std::decay_t<decltype(m)>;
-        if constexpr (std::is_same_v<T, DiffuseMaterial>)
-          return si.color * texture_eval(m.albedo, uv);
-        else if constexpr (std::is_same_v<T, ConductorMaterial>)
-          return si.color * texture_eval(m.color, uv);
-        else if constexpr (std::is_same_v<T, DielectricMaterial>)
-          return m.bsdf.tint;
-        else if constexpr (std::is_same_v<T, EmissiveMaterial>)
-          return texture_eval(m.color, uv);
-        else if constexpr (std::is_same_v<T, UnlitMaterial>)
-          return texture_eval(m.color, uv);
-        else if constexpr (std::is_same_v<T, ToonMaterial>)
-          return si.color * texture_eval(m.color, uv);
-        else if constexpr (std::is_same_v<T, MixMaterial>)
-          return Color(0.f);  // resolved before this is asked
-        else
-          return m.tint;
+      Overloaded{
+          [&](const DiffuseMaterial& m) -> Color { return si.color * texture_eval(m.albedo, uv); },
+          [&](const ConductorMaterial& m) -> Color { return si.color * texture_eval(m.color, uv); },
+          [](const DielectricMaterial& m) -> Color { return m.bsdf.tint; },
+          [&](const EmissiveMaterial& m) -> Color { return texture_eval(m.color, uv); },
+          [&](const UnlitMaterial& m) -> Color { return texture_eval(m.color, uv); },
+          [](const TransparentMaterial& m) -> Color { return m.tint; },
+          [&](const ToonMaterial& m) -> Color { return si.color * texture_eval(m.color, uv); },
+          [](const MixMaterial&) -> Color { return Color(0.f); },  // resolved before this is asked
       },
       material);
 }

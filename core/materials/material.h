@@ -1,5 +1,6 @@
 // Compiled materials: the flat, texture-resolved form of MaterialDesc that the
-// path loop reads. A material yields a BSDF at a hit, an emission, or both.
+// path loop reads. Each kind states what it yields at a hit (MaterialTraits): a
+// BSDF, an emission, or neither; code that decides by kind handles every kind.
 #pragma once
 
 #include "core/geometry/ray.h"
@@ -45,6 +46,57 @@ struct MixMaterial {
 using Material = std::variant<DiffuseMaterial, ConductorMaterial, DielectricMaterial, EmissiveMaterial,
                               UnlitMaterial, TransparentMaterial, ToonMaterial, MixMaterial>;
 
+// What a kind of material promises, decided once per alternative.
+struct MaterialFlags {
+  bool scatters;   // material_bsdf gives a BSDF
+  bool emits;      // material_emission can be non-zero
+  bool transmits;  // light passes through: the surface's orientation tells inside from outside
+  bool is_mix;     // stands for other materials: resolve_mix before asking anything else
+};
+// No general definition: a new alternative does not compile until it states its flags here.
+template <class T>
+struct MaterialTraits;
+template <>
+struct MaterialTraits<DiffuseMaterial> {
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .is_mix = false};
+};
+template <>
+struct MaterialTraits<ConductorMaterial> {
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .is_mix = false};
+};
+template <>
+struct MaterialTraits<DielectricMaterial> {
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = true, .is_mix = false};
+};
+template <>
+struct MaterialTraits<EmissiveMaterial> {
+  static constexpr MaterialFlags flags{.scatters = false, .emits = true, .transmits = false, .is_mix = false};
+};
+// Shows its colour to every ray, lit by nothing: it neither scatters nor lights the scene.
+template <>
+struct MaterialTraits<UnlitMaterial> {
+  static constexpr MaterialFlags flags{
+      .scatters = false, .emits = false, .transmits = false, .is_mix = false};
+};
+template <>
+struct MaterialTraits<TransparentMaterial> {
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = true, .is_mix = false};
+};
+// Scatters as a Lambertian of its lit colour where the path does not show its cel look.
+template <>
+struct MaterialTraits<ToonMaterial> {
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .is_mix = false};
+};
+template <>
+struct MaterialTraits<MixMaterial> {
+  static constexpr MaterialFlags flags{.scatters = false, .emits = false, .transmits = false, .is_mix = true};
+};
+
+// The flags of the kind `m` holds.
+inline MaterialFlags material_flags(const Material& m) {
+  return std::visit([]<class T>(const T&) { return MaterialTraits<T>::flags; }, m);
+}
+
 inline constexpr uint32_t kNoMaterial = UINT32_MAX;
 // Follows mixes from `index` to a material that is not a mix, choosing b with
 // probability luminance(factor) clamped to [0, 1]. u in [0, 1) is reused for
@@ -69,8 +121,6 @@ Color material_average_emission(const Material& material);
 // Colour for the albedo AOV.
 Color material_albedo(const Material& material, const SurfaceInteraction& si);
 // Surfaces a path passes through: their orientation decides inside and outside.
-inline bool material_has_transmission(const Material& m) {
-  return std::holds_alternative<DielectricMaterial>(m) || std::holds_alternative<TransparentMaterial>(m);
-}
+inline bool material_has_transmission(const Material& m) { return material_flags(m).transmits; }
 
 }  // namespace inkray

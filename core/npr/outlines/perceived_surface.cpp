@@ -1,5 +1,6 @@
 #include "core/npr/outlines/perceived_surface.h"
 
+#include "core/base/overloaded.h"
 #include "core/materials/fresnel.h"
 
 #include <optional>
@@ -10,19 +11,29 @@ namespace {
 // The direction a line-finding ray continues in past a specular surface, or
 // nullopt where the surface is what is seen.
 std::optional<Vec3> continue_through(const Material& material, const SurfaceInteraction& si, const Vec3& wo) {
-  if (const auto* c = std::get_if<ConductorMaterial>(&material)) {
-    if (c->alpha > 0.f) return std::nullopt;
-    return reflect(wo, si.ns);
-  }
-  if (const auto* d = std::get_if<DielectricMaterial>(&material)) {
-    if (d->bsdf.alpha > 0.f) return std::nullopt;
-    // Glass shows mostly what is behind it: follow the refraction, and the
-    // reflection only where there is none.
-    if (const auto r = refract(wo, si.ns, d->bsdf.eta)) return r->wt;
-    return reflect(wo, si.ns);
-  }
-  if (std::holds_alternative<TransparentMaterial>(material)) return -wo;
-  return std::nullopt;
+  using Next = std::optional<Vec3>;
+  return std::visit(Overloaded{
+                        // Rough and diffuse surfaces, emitters and flat colours are what is seen.
+                        [](const DiffuseMaterial&) -> Next { return std::nullopt; },
+                        [&](const ConductorMaterial& c) -> Next {
+                          if (c.alpha > 0.f) return std::nullopt;
+                          return reflect(wo, si.ns);
+                        },
+                        [&](const DielectricMaterial& d) -> Next {
+                          if (d.bsdf.alpha > 0.f) return std::nullopt;
+                          // Glass shows mostly what is behind it: follow the refraction,
+                          // and the reflection only where there is none.
+                          if (const auto r = refract(wo, si.ns, d.bsdf.eta)) return r->wt;
+                          return reflect(wo, si.ns);
+                        },
+                        [](const EmissiveMaterial&) -> Next { return std::nullopt; },
+                        [](const UnlitMaterial&) -> Next { return std::nullopt; },
+                        [&](const TransparentMaterial&) -> Next { return -wo; },
+                        [](const ToonMaterial&) -> Next { return std::nullopt; },
+                        // The caller resolves mixes first.
+                        [](const MixMaterial&) -> Next { return std::nullopt; },
+                    },
+                    material);
 }
 
 }  // namespace
@@ -47,7 +58,7 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     }
     const RenderObject& object = scene.objects[si.object];
     uint32_t material = object.material;
-    if (std::holds_alternative<MixMaterial>(scene.materials[material]))
+    if (material_flags(scene.materials[material]).is_mix)
       material = resolve_mix(scene.materials, material, si, u_mix);
     if (material == kNoMaterial) return out;
     const Vec3 wo = -glm::normalize(ray.d);

@@ -1,0 +1,469 @@
+// Light sampling against closed-form answers, per light type: what a sample
+// delivers, its pdf, that light_pdf agrees with sample_light for the same
+// direction, and that the area lights' pdfs integrate to 1. Then the light
+// selection distribution compile_scene builds.
+#include "core/lights/light_sampling.h"
+
+#include "core/compiler/compile.h"
+#include "core/math/hash.h"
+#include "core/sampling/warp.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace inkray {
+namespace {
+
+// Monte Carlo estimates below use an n x n stratified grid of jittered samples.
+constexpr int kGrid = 256;
+
+std::shared_ptr<const RenderScene> compile(const SceneDesc& desc) {
+  const CompileResult c = compile_scene(desc);
+  EXPECT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
+  return c.scene;
+}
+
+ObjectDesc object(std::string name, ShapeVariant shape, std::string material) {
+  ObjectDesc o;
+  o.name = std::move(name);
+  o.shape = std::move(shape);
+  o.material = std::move(material);
+  return o;
+}
+
+SceneDesc with_lights(std::vector<LightDesc> lights) {
+  SceneDesc d;
+  d.materials.push_back({"grey", DiffuseDesc{}, {}});
+  // Something to bound the scene; far from every light and reference point used.
+  d.objects.push_back(object("far", SphereDesc{{0.f, -100.f, 0.f}, 1.f}, "grey"));
+  d.lights = std::move(lights);
+  return d;
+}
+
+// A point on the origin whose surface faces +y.
+LightReference origin_facing_up() { return {Point3(0.f), Vec3(0.f), Normal3(0.f, 1.f, 0.f)}; }
+
+// Jittered sample (i, j) of the grid, reproducible.
+Vec2 grid_sample(int i, int j, Pcg32& rng) {
+  return {(float(i) + rng.next_float()) / kGrid, (float(j) + rng.next_float()) / kGrid};
+}
+
+// Where a ray from ref towards wi meets the scene, for light_pdf.
+std::optional<SurfaceInteraction> trace(const RenderScene& scene, const Point3& from, const Vec3& wi) {
+  const Ray ray{from, wi};
+  Hit hit;
+  if (!scene.geometry.intersect(ray, kInfinity, &hit)) return std::nullopt;
+  return scene.geometry.interaction(ray, hit);
+}
+
+void expect_color_near(const Color& got, const Color& want, float relative) {
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], relative * std::abs(want[c])) << "channel " << c;
+}
+
+// ---------------------------------------------------------------- delta lights
+
+// A point light's irradiance at distance d facing it is I / d^2.
+TEST(LightSampling, PointLightFollowsInverseSquare) {
+  const Color color(1.f, 0.5f, 0.25f);
+  const float intensity = 8.f;
+  const Point3 position(1.f, 2.f, -2.f);  // distance 3 from the origin
+  const auto scene = compile(with_lights({{"bulb", PointLightDesc{position, color, intensity}}}));
+  ASSERT_TRUE(scene);
+  ASSERT_EQ(scene->lights.size(), 1u);
+  const Light& light = scene->lights[0];
+  ASSERT_TRUE(std::holds_alternative<PointLight>(light));
+  const LightReference ref = origin_facing_up();
+
+  const auto s = sample_light(*scene, light, ref, Vec2(0.3f, 0.6f));
+  ASSERT_TRUE(s);
+  EXPECT_TRUE(s->is_delta);
+  EXPECT_EQ(s->pdf, 1.f);
+  expect_color_near(s->radiance, color * intensity / 9.f, 1e-5f);
+  EXPECT_NEAR(glm::length(s->wi - position / 3.f), 0.f, 1e-6f);
+  // The shadow ray ends at the light.
+  EXPECT_NEAR(glm::length(s->shadow_ray.o + s->shadow_ray.d - position), 0.f, 1e-5f);
+  EXPECT_LE(s->shadow_t_max, 1.f);
+  // No other technique reaches a delta light.
+  EXPECT_EQ(light_pdf(*scene, light, ref, s->wi, SurfaceInteraction{}), 0.f);
+
+  // Twice as far, a quarter of the light.
+  const LightReference far{-position, Vec3(0.f), Normal3(0.f, 1.f, 0.f)};
+  const auto s2 = sample_light(*scene, light, far, Vec2(0.5f));
+  ASSERT_TRUE(s2);
+  expect_color_near(s2->radiance, 0.25f * s->radiance, 1e-5f);
+}
+
+// A spot gives I / d^2 inside its falloff angle, nothing outside its cone, and
+// smoothstep(cos_total, cos_falloff, cos) of it in between.
+TEST(LightSampling, SpotLightFallsOffBetweenItsAngles) {
+  const float cone = 30.f, falloff = 20.f, intensity = 5.f, height = 4.f;
+  const auto scene = compile(with_lights(
+      {{"spot", SpotLightDesc{{0.f, height, 0.f}, {0.f, 0.f, 0.f}, Color(1.f), intensity, cone, falloff}}}));
+  ASSERT_TRUE(scene);
+  const Light& light = scene->lights[0];
+  ASSERT_TRUE(std::holds_alternative<SpotLight>(light));
+  const float cos_total = std::cos(glm::radians(cone)), cos_falloff = std::cos(glm::radians(falloff));
+
+  // A receiver on the floor at `degrees` off the spot's axis.
+  const auto at_angle = [&](float degrees) {
+    const float x = height * std::tan(glm::radians(degrees));
+    return sample_light(*scene, light, {Point3(x, 0.f, 0.f), Vec3(0.f), Normal3(0.f, 1.f, 0.f)}, Vec2(0.5f));
+  };
+  const auto expected = [&](float degrees) {
+    const float d2 = sqr(height / std::cos(glm::radians(degrees)));
+    const float t =
+        glm::clamp((std::cos(glm::radians(degrees)) - cos_total) / (cos_falloff - cos_total), 0.f, 1.f);
+    return intensity * t * t * (3.f - 2.f * t) / d2;
+  };
+  for (float degrees : {0.f, 10.f, 19.f}) {
+    const auto s = at_angle(degrees);
+    ASSERT_TRUE(s) << degrees;
+    EXPECT_TRUE(s->is_delta);
+    EXPECT_NEAR(s->radiance.g, intensity / sqr(height / std::cos(glm::radians(degrees))), 1e-5f) << degrees;
+  }
+  float previous = expected(20.f);
+  for (float degrees : {21.f, 23.f, 25.f, 27.f, 29.f}) {
+    const auto s = at_angle(degrees);
+    ASSERT_TRUE(s) << degrees;
+    EXPECT_NEAR(s->radiance.g, expected(degrees), 1e-4f * expected(0.f)) << degrees;
+    EXPECT_LT(s->radiance.g, previous) << degrees;
+    EXPECT_GT(s->radiance.g, 0.f) << degrees;
+    previous = s->radiance.g;
+  }
+  for (float degrees : {31.f, 45.f, 80.f}) EXPECT_FALSE(at_angle(degrees)) << degrees;
+  // Behind the spot.
+  EXPECT_FALSE(sample_light(
+      *scene, light, {Point3(0.f, 2.f * height, 0.f), Vec3(0.f), Normal3(0.f, -1.f, 0.f)}, Vec2(0.5f)));
+  EXPECT_EQ(light_pdf(*scene, light, origin_facing_up(), Vec3(0.f, 1.f, 0.f), SurfaceInteraction{}), 0.f);
+}
+
+// A directional light's radiance field is its irradiance on a surface facing it;
+// a tilted surface receives it times the cosine.
+TEST(LightSampling, DirectionalLightGivesItsIrradiance) {
+  const Vec3 travel(1.f, -2.f, 0.5f);
+  const Color color(0.5f, 1.f, 0.75f);
+  const float intensity = 3.f;
+  const auto scene = compile(with_lights({{"sun", DirectionalLightDesc{travel, color, intensity}}}));
+  ASSERT_TRUE(scene);
+  const Light& light = scene->lights[0];
+  ASSERT_TRUE(std::holds_alternative<DirectionalLight>(light));
+  for (const Point3 p : {Point3(0.f), Point3(10.f, -3.f, 7.f)}) {
+    const auto s = sample_light(*scene, light, {p, Vec3(0.f), Normal3(0.f, 1.f, 0.f)}, Vec2(0.2f, 0.9f));
+    ASSERT_TRUE(s);
+    EXPECT_TRUE(s->is_delta);
+    EXPECT_EQ(s->pdf, 1.f);
+    EXPECT_NEAR(glm::length(s->wi + glm::normalize(travel)), 0.f, 1e-6f);
+    expect_color_near(s->radiance, color * intensity, 1e-6f);
+    EXPECT_EQ(s->shadow_t_max, kInfinity);
+    const float irradiance_up = s->radiance.g * glm::dot(Vec3(0.f, 1.f, 0.f), s->wi) / s->pdf;
+    EXPECT_NEAR(irradiance_up, intensity * 2.f / glm::length(travel), 1e-5f);
+  }
+  EXPECT_EQ(light_pdf(*scene, light, origin_facing_up(), -travel, SurfaceInteraction{}), 0.f);
+}
+
+// ---------------------------------------------------------------- mesh area light
+
+// A square emitter of half-width a, facing down at height h above the origin.
+SceneDesc square_lamp_scene(float a, float h, float le) {
+  SceneDesc d = with_lights({});
+  d.materials.push_back({"lamp", EmissiveDesc{Color(le), 1.f, false}, {}});
+  // cross(edge_u, edge_v) points down: the lamp's front faces the origin.
+  d.objects.push_back(
+      object("lamp", QuadDesc{{-a, h, -a}, {2.f * a, 0.f, 0.f}, {0.f, 0.f, 2.f * a}}, "lamp"));
+  return d;
+}
+
+// Irradiance below the centre of a square of half-width a at height h, radiance
+// le: four corner-aligned rectangles (differential-area-to-rectangle form factor).
+float square_irradiance(float a, float h, float le) {
+  const double x = a / h, sx = std::sqrt(1.0 + x * x);
+  return float(4.0 * le * (x / sx) * std::atan(x / sx));
+}
+
+TEST(LightSampling, MeshAreaLightPdfIsInverseAreaInSolidAngle) {
+  const float a = 0.75f, h = 1.5f, le = 2.f;
+  const auto scene = compile(square_lamp_scene(a, h, le));
+  ASSERT_TRUE(scene);
+  ASSERT_EQ(scene->lights.size(), 1u);
+  const Light& light = scene->lights[0];
+  const auto* mesh = std::get_if<MeshAreaLight>(&light);
+  ASSERT_TRUE(mesh);
+  const float area = 4.f * a * a;
+  EXPECT_NEAR(mesh->area, area, 1e-5f);
+  EXPECT_EQ(scene->objects[mesh->object].light, 0);
+
+  const LightReference ref = origin_facing_up();
+  Pcg32 rng(7);
+  double irradiance = 0.0;
+  int checked_pdf = 0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const auto s = sample_light(*scene, light, ref, grid_sample(i, j, rng));
+      ASSERT_TRUE(s);
+      ASSERT_FALSE(s->is_delta);
+      ASSERT_GT(s->wi.y, 0.f);
+      expect_color_near(s->radiance, Color(le), 1e-6f);
+      // The point lies on the plane y = h at distance h / wi.y, seen at cosine wi.y:
+      // pdf = (1 / area) * dist^2 / cos.
+      const float expected_pdf = sqr(h) / (area * s->wi.y * s->wi.y * s->wi.y);
+      ASSERT_NEAR(s->pdf, expected_pdf, 1e-4f * expected_pdf);
+      irradiance += double(s->radiance.g * s->wi.y / s->pdf);
+      if ((i * kGrid + j) % 97 == 0) {
+        // light_pdf for the point a ray in the same direction finds.
+        const auto on_light = trace(*scene, ref.p, s->wi);
+        ASSERT_TRUE(on_light);
+        ASSERT_EQ(on_light->object, mesh->object);
+        EXPECT_NEAR(light_pdf(*scene, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
+        ++checked_pdf;
+      }
+    }
+  EXPECT_GT(checked_pdf, 600);
+  const float expected = square_irradiance(a, h, le);
+  EXPECT_NEAR(irradiance / double(kGrid * kGrid), expected, 0.002 * expected);
+
+  // The emitter is one-sided: from above it sends nothing.
+  const LightReference above{Point3(0.f, 2.f * h, 0.f), Vec3(0.f), Normal3(0.f, -1.f, 0.f)};
+  EXPECT_FALSE(sample_light(*scene, light, above, Vec2(0.4f, 0.4f)));
+}
+
+// Over the directions that reach the square, light_pdf integrates to 1
+// (uniform hemisphere directions, 256^2 stratified, tolerance 1%).
+TEST(LightSampling, MeshAreaLightPdfIntegratesToOne) {
+  const auto scene = compile(square_lamp_scene(1.f, 1.f, 1.f));
+  ASSERT_TRUE(scene);
+  const Light& light = scene->lights[0];
+  const LightReference ref = origin_facing_up();
+  Pcg32 rng(11);
+  double sum = 0.0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const Vec3 h = sample_uniform_hemisphere(grid_sample(i, j, rng));
+      const Vec3 wi(h.x, h.z, h.y);  // the hemisphere around +y
+      const auto on_light = trace(*scene, ref.p, wi);
+      if (on_light && on_light->object == std::get<MeshAreaLight>(light).object)
+        sum += light_pdf(*scene, light, ref, wi, *on_light) / uniform_hemisphere_pdf();
+    }
+  EXPECT_NEAR(sum / double(kGrid * kGrid), 1.0, 0.01);
+}
+
+// ---------------------------------------------------------------- sphere area light
+
+SceneDesc sphere_lamp_scene(Point3 center, float radius, float le, bool two_sided) {
+  SceneDesc d = with_lights({});
+  d.materials.push_back({"lamp", EmissiveDesc{Color(le), 1.f, two_sided}, {}});
+  d.objects.push_back(object("lamp", SphereDesc{center, radius}, "lamp"));
+  return d;
+}
+
+// Seen from outside, a sphere is sampled uniformly in the cone it subtends.
+TEST(LightSampling, SphereLightSamplesTheConeItSubtends) {
+  const float r = 1.f, d = 2.5f, le = 3.f;
+  const auto scene = compile(sphere_lamp_scene({0.f, d, 0.f}, r, le, false));
+  ASSERT_TRUE(scene);
+  ASSERT_EQ(scene->lights.size(), 1u);
+  const Light& light = scene->lights[0];
+  const auto* sphere = std::get_if<SphereAreaLight>(&light);
+  ASSERT_TRUE(sphere);
+  const float cos_max = std::sqrt(1.f - sqr(r / d));
+  const float cone_pdf = 1.f / (2.f * kPi * (1.f - cos_max));
+
+  const LightReference ref = origin_facing_up();
+  Pcg32 rng(3);
+  double irradiance = 0.0;
+  int checked_pdf = 0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const auto s = sample_light(*scene, light, ref, grid_sample(i, j, rng));
+      ASSERT_TRUE(s);
+      ASSERT_GE(s->wi.y, cos_max - 1e-4f);  // inside the cone
+      ASSERT_NEAR(s->pdf, cone_pdf, 1e-4f * cone_pdf);
+      expect_color_near(s->radiance, Color(le), 1e-6f);
+      irradiance += double(s->radiance.g * s->wi.y / s->pdf);
+      if ((i * kGrid + j) % 97 == 0) {
+        const auto on_light = trace(*scene, ref.p, s->wi);
+        // Directions at the very rim may graze past the sphere.
+        if (!on_light) continue;
+        ASSERT_EQ(on_light->object, sphere->object);
+        EXPECT_NEAR(light_pdf(*scene, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
+        ++checked_pdf;
+      }
+    }
+  EXPECT_GT(checked_pdf, 600);
+  // A sphere straight above a surface: E = pi le (r / d)^2.
+  const float expected = kPi * le * sqr(r / d);
+  EXPECT_NEAR(irradiance / double(kGrid * kGrid), expected, 0.002 * expected);
+}
+
+// Over the directions that reach the sphere, light_pdf integrates to 1
+// (uniform sphere directions, 256^2 stratified, tolerance 1%).
+TEST(LightSampling, SphereLightPdfIntegratesToOneOverItsCone) {
+  const auto scene = compile(sphere_lamp_scene({0.5f, 2.f, -0.5f}, 1.f, 1.f, false));
+  ASSERT_TRUE(scene);
+  const Light& light = scene->lights[0];
+  const LightReference ref = origin_facing_up();
+  Pcg32 rng(5);
+  double sum = 0.0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const Vec3 wi = sample_uniform_sphere(grid_sample(i, j, rng));
+      const auto on_light = trace(*scene, ref.p, wi);
+      if (on_light && on_light->object == std::get<SphereAreaLight>(light).object)
+        sum += light_pdf(*scene, light, ref, wi, *on_light) / uniform_sphere_pdf();
+    }
+  EXPECT_NEAR(sum / double(kGrid * kGrid), 1.0, 0.01);
+}
+
+// Inside a sphere (here two-sided, so it shines inwards) the whole sphere is
+// sampled by area: the pdf still matches light_pdf and integrates to 1, and a
+// surface inside a uniformly glowing sphere receives pi le.
+TEST(LightSampling, SphereLightFromInside) {
+  const float r = 2.f, le = 0.5f;
+  const auto scene = compile(sphere_lamp_scene({0.f, 0.5f, 0.f}, r, le, true));
+  ASSERT_TRUE(scene);
+  const Light& light = scene->lights[0];
+  const uint32_t object = std::get<SphereAreaLight>(light).object;
+  const LightReference ref = origin_facing_up();
+  Pcg32 rng(9);
+  double irradiance = 0.0, pdf_sum = 0.0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const auto s = sample_light(*scene, light, ref, grid_sample(i, j, rng));
+      ASSERT_TRUE(s);
+      expect_color_near(s->radiance, Color(le), 1e-6f);
+      irradiance += double(s->radiance.g * std::max(0.f, s->wi.y) / s->pdf);
+      if ((i * kGrid + j) % 97 == 0) {
+        const auto on_light = trace(*scene, ref.p, s->wi);
+        ASSERT_TRUE(on_light);
+        ASSERT_EQ(on_light->object, object);
+        EXPECT_NEAR(light_pdf(*scene, light, ref, s->wi, *on_light), s->pdf, 1e-3f * s->pdf);
+      }
+      const Vec3 wi = sample_uniform_sphere(grid_sample(i, j, rng));
+      const auto on_light = trace(*scene, ref.p, wi);
+      ASSERT_TRUE(on_light);
+      pdf_sum += light_pdf(*scene, light, ref, wi, *on_light) / uniform_sphere_pdf();
+    }
+  EXPECT_NEAR(pdf_sum / double(kGrid * kGrid), 1.0, 0.01);
+  EXPECT_NEAR(irradiance / double(kGrid * kGrid), kPi * le, 0.01 * kPi * le);
+}
+
+// ---------------------------------------------------------------- environment
+
+TEST(LightSampling, EnvironmentIsSampledUniformly) {
+  SceneDesc d = with_lights({});
+  d.environment = GradientEnvironmentDesc{Color(0.2f, 0.4f, 1.f), Color(1.f), Color(0.1f)};
+  const auto scene = compile(d);
+  ASSERT_TRUE(scene);
+  ASSERT_EQ(scene->environment_light, 0);
+  const Light& light = scene->lights[0];
+  const auto* env = std::get_if<EnvironmentLight>(&light);
+  ASSERT_TRUE(env);
+  const LightReference ref = origin_facing_up();
+  Pcg32 rng(13);
+  for (int k = 0; k < 1000; ++k) {
+    const auto s = sample_light(*scene, light, ref, Vec2(rng.next_float(), rng.next_float()));
+    ASSERT_TRUE(s);
+    EXPECT_FALSE(s->is_delta);
+    EXPECT_NEAR(glm::length(s->wi), 1.f, 1e-5f);
+    EXPECT_EQ(s->pdf, uniform_sphere_pdf());
+    EXPECT_EQ(light_pdf(*scene, light, ref, s->wi, SurfaceInteraction{}), s->pdf);
+    expect_color_near(s->radiance, env->radiance(s->wi), 1e-6f);
+    EXPECT_EQ(s->shadow_t_max, kInfinity);
+  }
+}
+
+// A constant sky of radiance L gives a surface pi L.
+TEST(LightSampling, ConstantEnvironmentIrradiance) {
+  SceneDesc d = with_lights({});
+  d.environment = ConstantEnvironmentDesc{Color(0.8f)};
+  const auto scene = compile(d);
+  ASSERT_TRUE(scene);
+  const Light& light = scene->lights[size_t(scene->environment_light)];
+  Pcg32 rng(17);
+  double irradiance = 0.0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const auto s = sample_light(*scene, light, origin_facing_up(), grid_sample(i, j, rng));
+      ASSERT_TRUE(s);
+      irradiance += double(s->radiance.g * std::max(0.f, s->wi.y) / s->pdf);
+    }
+  EXPECT_NEAR(irradiance / double(kGrid * kGrid), kPi * 0.8f, 0.005 * kPi * 0.8f);
+}
+
+// ---------------------------------------------------------------- light selection
+
+// Half by power, half uniform: every light can be chosen, a black one too, and
+// the probabilities sum to 1. Sampling picks each light at its pmf.
+TEST(LightSampling, SelectionGivesEveryLightAShare) {
+  SceneDesc d = square_lamp_scene(0.5f, 3.f, 10.f);
+  d.materials.push_back({"ball", EmissiveDesc{Color(1.f, 0.5f, 0.5f), 20.f, false}, {}});
+  d.objects.push_back(object("ball", SphereDesc{{3.f, 2.f, 0.f}, 0.25f}, "ball"));
+  d.lights.push_back({"bulb", PointLightDesc{{0.f, 2.f, 0.f}, Color(1.f), 50.f}});
+  d.lights.push_back({"spot", SpotLightDesc{{1.f, 3.f, 0.f}, {1.f, 0.f, 0.f}, Color(1.f), 2.f, 20.f, 10.f}});
+  d.lights.push_back({"sun", DirectionalLightDesc{{0.f, -1.f, 0.2f}, Color(1.f), 4.f}});
+  d.lights.push_back({"off", PointLightDesc{{0.f, 1.f, 0.f}, Color(1.f), 0.f}});
+  d.environment = ConstantEnvironmentDesc{Color(0.05f)};
+  const auto scene = compile(d);
+  ASSERT_TRUE(scene);
+  const size_t n = scene->lights.size();
+  ASSERT_EQ(n, 7u);  // two emitters, four lights, the sky
+  ASSERT_EQ(scene->light_selection.size(), n);
+  ASSERT_FALSE(scene->light_selection.empty());
+
+  // Every emitting object points at its own light.
+  for (uint32_t o = 0; o < scene->objects.size(); ++o) {
+    const int l = scene->objects[o].light;
+    if (l < 0) continue;
+    std::visit(
+        [&](const auto& light) {
+          if constexpr (requires { light.object; })
+            EXPECT_EQ(light.object, o);
+          else
+            ADD_FAILURE() << "object " << o << " points at a light that is not an area light";
+        },
+        scene->lights[size_t(l)]);
+  }
+
+  double total_power = 0.0;
+  for (const Light& l : scene->lights) total_power += light_power(*scene, l);
+  ASSERT_GT(total_power, 0.0);
+  double sum = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const float pmf = scene->light_selection.pmf(i);
+    EXPECT_GT(pmf, 0.f) << "light " << i;
+    const double expected = 0.5 * light_power(*scene, scene->lights[i]) / total_power + 0.5 / double(n);
+    EXPECT_NEAR(pmf, expected, 1e-6) << "light " << i;
+    sum += pmf;
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-6);
+  EXPECT_EQ(light_power(*scene, scene->lights[5]), 0.f);  // "off"
+  EXPECT_NEAR(scene->light_selection.pmf(5), 0.5 / double(n), 1e-7);
+
+  // Stratified choices land on each light in proportion to its pmf.
+  std::vector<int> count(n, 0);
+  const int choices = 1 << 16;
+  for (int k = 0; k < choices; ++k) {
+    float pmf = 0.f;
+    const size_t i = scene->light_selection.sample((float(k) + 0.5f) / float(choices), &pmf);
+    ASSERT_LT(i, n);
+    EXPECT_EQ(pmf, scene->light_selection.pmf(i));
+    ++count[i];
+  }
+  for (size_t i = 0; i < n; ++i)
+    EXPECT_NEAR(double(count[i]) / choices, scene->light_selection.pmf(i), 2.0 / choices) << "light " << i;
+}
+
+// With no lights there is nothing to choose: the integrator skips light sampling.
+TEST(LightSampling, SelectionIsEmptyWithoutLights) {
+  const auto scene = compile(with_lights({}));
+  ASSERT_TRUE(scene);
+  EXPECT_TRUE(scene->lights.empty());
+  EXPECT_TRUE(scene->light_selection.empty());
+}
+
+}  // namespace
+}  // namespace inkray
