@@ -1,5 +1,5 @@
-// The editor's widgets, generated from the parameter lists (DESIGN principle 8):
-// a visitor over visit_params that draws one ImGui widget per Param, with its
+// The editor's widgets, generated from the parameter lists (docs/architecture.md,
+// "The shape"): a visitor over visit_params that draws one ImGui widget per Param, with its
 // range and doc as a tooltip, and records which parameter changed.
 #pragma once
 

@@ -1,6 +1,6 @@
 #include "ui/scene_edits.h"
 
-#include "core/compiler/compile.h"
+#include "core/compiler/compile_objects.h"
 
 #include <algorithm>
 #include <vector>

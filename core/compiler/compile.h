@@ -1,12 +1,20 @@
-// compile_scene: SceneDesc -> immutable RenderScene (Embree BVH, flat
-// materials, light-sampling tables). Errors name the object or material.
+// Compiling: SceneDesc -> immutable RenderScene (BVHs, flat materials,
+// light-sampling tables). A SceneCompiler keeps what it built between compiles
+// and redoes only what the document's changes touched (docs/architecture.md,
+// "Stages"); compile_scene is a compile without a past. Errors name the object
+// or material.
 #pragma once
 
 #include "core/base/cancel.h"
+#include "core/compiler/asset_cache.h"
+#include "core/compiler/compile_counters.h"
+#include "core/document/stage_diff.h"
 #include "core/world/render_scene.h"
 
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,19 +29,40 @@ struct CompileResult {
   std::shared_ptr<const RenderScene> scene;  // null when there were errors or it was cancelled
   std::vector<std::string> errors;
   bool cancelled = false;  // stopped by options.cancel; errors then says so
+  // What separates this document from the last one compiled; every stage for a first compile.
+  StageSet changes;
 };
 
-// Runs check_scene first (a document read for editing may not render yet). Before
-// anything large is allocated the scene's memory estimate is checked against the
-// limit (memory_budget.h); transformed geometry must lie within kMaxWorldCoordinate
-// of the origin.
+class SceneCompiler {
+ public:
+  // Runs check_scene first (a document read for editing may not render yet). Before
+  // anything large is allocated the scene's memory estimate is checked against the
+  // limit (memory_budget.h); transformed geometry must lie within kMaxWorldCoordinate
+  // of the origin. What the last successful compile built is reused where the
+  // document's changes leave it valid.
+  CompileResult compile(const SceneDesc& desc, const CompileOptions& options = {});
+
+  const CompileCounters& counters() const { return counters_; }
+  AssetCache& assets() { return assets_; }
+
+ private:
+  // Stages of the asset files whose stamps differ from the last compile's; fills
+  // `stamps` with the current ones.
+  StageSet changed_files(const SceneDesc& desc, std::map<std::string, std::string>& stamps) const;
+
+  AssetCache assets_;
+  CompileCounters counters_;
+  std::optional<SceneDesc> last_desc_;  // the document last_ was compiled from
+  std::shared_ptr<const RenderScene> last_;
+  size_t last_document_materials_ = 0;  // last_->materials before the stroke materials
+  std::vector<std::string> material_keys_;
+  std::map<std::string, std::string> file_stamps_;  // asset file -> stamp, at the last compile  // the cache entries the material table was built from
+};
+
 CompileResult compile_scene(const SceneDesc& desc, const CompileOptions& options = {});
 
 // Geometry beyond this distance from the origin is refused: far inside the ray
 // origins Embree accepts (about 1.8e18), since a ray can start on any surface.
 inline constexpr float kMaxWorldCoordinate = 1e15f;
-
-// Scale, then the rotations in order, then translation.
-Transform transform_from_desc(const TransformDesc& desc);
 
 }  // namespace inkray

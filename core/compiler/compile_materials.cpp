@@ -3,7 +3,6 @@
 // is an error rather than a loop.
 #include "core/compiler/compile_materials.h"
 
-#include "core/image/image_io.h"
 
 #include <array>
 #include <deque>
@@ -12,22 +11,18 @@
 namespace inkray {
 namespace {
 
-// Loads each image file once per compile, however many materials use it.
+// Images by file name relative to the scene's folder, read through the compiler's
+// cache: a material edit decodes nothing that was decoded before.
 class ImageCache {
  public:
-  explicit ImageCache(std::filesystem::path base) : base_(std::move(base)) {}
+  ImageCache(std::filesystem::path base, AssetCache& assets) : base_(std::move(base)), assets_(assets) {}
   std::shared_ptr<const RgbImage> get(const ImageTextureDesc& d, std::string* error) {
-    const std::filesystem::path file = base_ / d.path;
-    const std::string key = file.string() + (d.srgb ? "#srgb" : "#linear");
-    if (auto it = images_.find(key); it != images_.end()) return it->second;
-    RgbImage image;
-    if (!read_image(file, d.srgb, &image, error)) return nullptr;
-    return images_[key] = std::make_shared<const RgbImage>(std::move(image));
+    return assets_.image(base_ / d.path, d.srgb, error);
   }
 
  private:
   std::filesystem::path base_;
-  std::map<std::string, std::shared_ptr<const RgbImage>> images_;
+  AssetCache& assets_;
 };
 
 std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images, std::string* error) {
@@ -172,9 +167,10 @@ void resolve_mixes(const std::vector<MaterialDesc>& list, std::vector<std::optio
 
 }  // namespace
 
-void compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors) {
+void compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
+                       AssetCache& assets) {
   const std::vector<MaterialDesc>& list = desc.materials;
-  ImageCache images(desc.base_dir);
+  ImageCache images(desc.base_dir, assets);
   std::vector<std::optional<Material>> compiled(list.size());
   auto fail = [&](size_t i, const std::string& error) {
     errors.push_back("materials[" + std::to_string(i) + "] \"" + list[i].name + "\": " + error);

@@ -6,64 +6,56 @@
 #include "core/npr/strokes/stroke_color.h"
 #include "core/npr/strokes/stroke_mesh.h"
 #include "core/npr/strokes/stroke_placement.h"
-#include "core/document/json_write.h"
+#include "core/document/param_key.h"
 
-#include <map>
-#include <mutex>
+#include <algorithm>
 #include <optional>
 
 namespace inkray {
 namespace {
 
 // What an emitter's strokes are, whatever they are painted with: placement,
-// ribbons and brush depend only on the emitter, its object and the scene's
-// folder, so they are kept between compiles and an edit elsewhere in the
-// document (a material, a light, the outlines) does not regrow them (DESIGN
-// principle 3). Colours are recomputed on every compile.
+// ribbons and brush depend only on the emitter's shape parameters, its object's
+// shape and placement and the scene's folder, so they are kept in the asset
+// cache and an edit elsewhere in the document (a material, a light, the
+// outlines) does not regrow them. The painted mesh is cached too, under the
+// colours' own inputs: the object's material and the emitter's colour jitter.
 struct StrokeShape {
   std::vector<SurfacePoint> roots;
-  StrokeGeometry geometry;
-  std::shared_ptr<const AlphaMask> mask;
+  std::shared_ptr<const ShapeBvh> bvh;  // the white ribbons with the brush's alpha test
 };
-
-// The shapes the last compile used, by key. Compiles on several threads (the
-// viewport and an export) share it under the lock; keeping only the last
-// compile's entries bounds the memory to one scene's strokes.
-class StrokeShapeCache {
- public:
-  std::shared_ptr<const StrokeShape> find(const std::string& key) {
-    const std::lock_guard lock(mutex_);
-    const auto it = shapes_.find(key);
-    return it == shapes_.end() ? nullptr : it->second;
-  }
-  void keep_only(std::map<std::string, std::shared_ptr<const StrokeShape>> used) {
-    const std::lock_guard lock(mutex_);
-    shapes_ = std::move(used);
-  }
-
- private:
-  std::mutex mutex_;
-  std::map<std::string, std::shared_ptr<const StrokeShape>> shapes_;
-};
-
-StrokeShapeCache& shape_cache() {
-  static StrokeShapeCache cache;
-  return cache;
-}
 
 struct BuiltStrokes {
   const StrokeEmitterDesc* emitter = nullptr;
   uint32_t base_object = 0;
   std::string key;
   std::shared_ptr<const StrokeShape> shape;
-  std::vector<Color> colors;
 };
 
-// Everything a StrokeShape depends on, as text.
-std::string shape_key(const nlohmann::ordered_json& doc, const SceneDesc& desc, size_t emitter,
-                      uint32_t object_source) {
-  return desc.base_dir.string() + "\n" + doc["strokes"][emitter].dump() + "\n" +
-         doc["objects"][object_source].dump();
+// Everything a StrokeShape depends on: the emitter without its name and colour jitter.
+std::string shape_key(const SceneDesc& desc, const StrokeEmitterDesc& e, const std::string& object_key) {
+  StrokeEmitterDesc shape_only = e;
+  shape_only.name.clear();
+  shape_only.hue_jitter = shape_only.saturation_jitter = shape_only.value_jitter = 0.f;
+  return "strokes|" + desc.base_dir.string() + "|" + param_key(shape_only) + "|" + object_key;
+}
+
+// Everything the colours depend on beyond the shape: the jitter, and the material
+// under the strokes (all materials when it is a mix, which may reach any).
+std::string paint_key(const SceneDesc& desc, const StrokeEmitterDesc& e, const std::string& material) {
+  std::string key = "painted|";
+  append_key(key, e.hue_jitter);
+  append_key(key, e.saturation_jitter);
+  append_key(key, e.value_jitter);
+  const auto under = std::find_if(desc.materials.begin(), desc.materials.end(),
+                                  [&](const MaterialDesc& m) { return m.name == material; });
+  const bool mix = under != desc.materials.end() && std::holds_alternative<MixDesc>(under->data);
+  for (const MaterialDesc& m : desc.materials) {
+    if (m.name != material && !mix) continue;
+    append_key(key, m.name);
+    append_key(key, m.data);
+  }
+  return key;
 }
 
 std::optional<uint32_t> compiled_object(const RenderScene& scene, const std::string& name) {
@@ -80,9 +72,10 @@ bool described_object(const SceneDesc& desc, const std::string& name) {
 
 // Builds one emitter's strokes; nullopt when there is nothing to build or on an
 // error (appended to errors).
-std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const nlohmann::ordered_json& doc,
-                                          const RenderScene& scene, size_t index, std::vector<std::string>& errors,
-                                          const Cancel& cancel) {
+std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderScene& scene,
+                                          std::span<const std::string> object_keys, size_t index,
+                                          StrokeBuild& build, std::vector<std::string>& errors) {
+  const Cancel& cancel = build.cancel;
   const StrokeEmitterDesc& e = desc.strokes[index];
   const std::string where = "strokes[" + std::to_string(index) + "] \"" + e.name + "\": ";
   if (e.count <= 0) return std::nullopt;
@@ -92,53 +85,54 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const nlohmann:
     if (!described_object(desc, e.object)) errors.push_back(where + "no object named \"" + e.object + "\"");
     return std::nullopt;
   }
-  BuiltStrokes built{&e, *object, shape_key(doc, desc, index, scene.objects[*object].source), nullptr, {}};
-  built.shape = shape_cache().find(built.key);
+  // The brush first, found or read, so the cache keeps it while the strokes use it.
+  std::string error;
+  const auto brush = build.assets.brush(e, desc.base_dir, &error);
+  if (!brush) {
+    errors.push_back(where + error);
+    return std::nullopt;
+  }
+  BuiltStrokes built{&e, *object, shape_key(desc, e, object_keys[*object]), nullptr};
+  built.shape = build.assets.find<StrokeShape>(built.key);
   if (!built.shape) {
-    std::string error;
     const auto surface = StrokeSurface::from_shape(scene.geometry.shape(*object), &error);
     if (!surface) {
       errors.push_back(where + "object \"" + e.object + "\": " + error);
       return std::nullopt;
     }
-    auto mask = make_brush_mask(e, desc.base_dir, &error);
-    if (!mask) {
-      errors.push_back(where + error);
-      return std::nullopt;
-    }
+    auto mask = std::make_shared<AlphaMask>(*brush);  // this emitter's own layer settings follow
     auto shape = std::make_shared<StrokeShape>();
     shape->roots = place_roots(*surface, size_t(e.count), uint32_t(e.seed), nullptr, cancel);
     if (cancel.requested()) return std::nullopt;
     // Colours are painted in below; the ribbons are built white.
     const std::vector<Color> white(shape->roots.size(), Color(1.f));
-    shape->geometry = build_stroke_mesh(*surface, shape->roots, white, e, cancel);
+    StrokeGeometry geometry = build_stroke_mesh(*surface, shape->roots, white, e, cancel);
     if (cancel.requested()) return std::nullopt;  // unfinished ribbons are never cached
     mask->triangles_per_item = 2 * uint32_t(std::max(e.segments, 1));
     // Every stroke vertex lies within max_lift of the surface; the margin covers
     // the surface curving away from a ribbon's plane beside it.
-    mask->layer_thickness = 1.5f * shape->geometry.max_lift;
-    shape->mask = std::move(mask);
-    built.shape = std::move(shape);
+    mask->layer_thickness = 1.5f * geometry.max_lift;
+    shape->bvh = std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(geometry.mesh)),
+                                                  std::move(mask));
+    ++build.counters.shape_bvhs;
+    built.shape = build.assets.keep<StrokeShape>(built.key, std::move(shape));
+    ++build.counters.stroke_sets;
   }
-  built.colors = stroke_colors(scene.materials, scene.objects[*object].material, built.shape->roots, e);
   return built;
 }
 
 }  // namespace
 
-void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
-                     const Cancel& cancel) {
+void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const std::string> object_keys,
+                     StrokeBuild& build, std::vector<std::string>& errors) {
   if (desc.strokes.empty()) return;
-  const nlohmann::ordered_json doc = write_scene_document(desc);
   // Build everything before adding any: the surfaces refer to the base objects'
   // meshes, which adding shapes may move.
   std::vector<BuiltStrokes> built;
-  for (size_t i = 0; i < desc.strokes.size() && !cancel.requested(); ++i)
-    if (auto b = build_emitter(desc, doc, scene, i, errors, cancel)) built.push_back(std::move(*b));
-  if (!errors.empty() || cancel.requested()) return;
-  std::map<std::string, std::shared_ptr<const StrokeShape>> used;
+  for (size_t i = 0; i < desc.strokes.size() && !build.cancel.requested(); ++i)
+    if (auto b = build_emitter(desc, scene, object_keys, i, build, errors)) built.push_back(std::move(*b));
+  if (!errors.empty() || build.cancel.requested()) return;
   for (BuiltStrokes& b : built) {
-    used[b.key] = b.shape;
     const uint32_t material = uint32_t(scene.materials.size());
     scene.materials.push_back(DiffuseMaterial{ConstantTexture{Color(1.f)}});
     scene.material_names.push_back(b.emitter->name + ".strokes");
@@ -148,15 +142,25 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::vector<std:
     object.name = b.emitter->name;
     object.material = material;
     object.light = -1;
+    const uint32_t base_material = scene.objects[b.base_object].material;
     scene.objects.push_back(std::move(object));
-    // Stroke i owns the same number of consecutive vertices (stroke_mesh.h).
-    TriangleMesh mesh = b.shape->geometry.mesh;
-    const size_t per_stroke = b.colors.empty() ? 0 : mesh.colors.size() / b.colors.size();
-    for (size_t i = 0; i < b.colors.size(); ++i)
-      std::fill_n(mesh.colors.begin() + std::ptrdiff_t(i * per_stroke), per_stroke, b.colors[i]);
-    scene.geometry.add(std::move(mesh), b.shape->mask);
+    const std::string key =
+        b.key + "|" + paint_key(desc, *b.emitter, scene.material_names[base_material]);
+    auto painted = build.assets.find<Shape>(key);
+    if (!painted) {
+      // Stroke i owns the same number of consecutive vertices (stroke_mesh.h).
+      const std::vector<Color> colors = stroke_colors(scene.materials, base_material, b.shape->roots, *b.emitter);
+      TriangleMesh mesh = std::get<TriangleMesh>(b.shape->bvh->shape());
+      const size_t per_stroke = colors.empty() ? 0 : mesh.colors.size() / colors.size();
+      for (size_t i = 0; i < colors.size(); ++i)
+        std::fill_n(mesh.colors.begin() + std::ptrdiff_t(i * per_stroke), per_stroke, colors[i]);
+      painted = build.assets.keep<Shape>(key, std::make_shared<const Shape>(std::move(mesh)));
+      ++build.counters.stroke_paints;
+    }
+    // The painted copy is what hits read (its vertex colours); the white ribbons'
+    // BVH traces it, unchanged by a repaint. Strokes lie where they grew: in world space.
+    scene.geometry.add(b.shape->bvh, Transform{}, painted);
   }
-  shape_cache().keep_only(std::move(used));
 }
 
 }  // namespace inkray

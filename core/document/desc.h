@@ -1,6 +1,7 @@
-// SceneDesc: the editable scene document (DESIGN principle 2). Plain structs
-// with defaults, references by name, serialised to JSON by scene/json_io.
-// Every struct lists its parameters once in visit_params (scene/params.h).
+// SceneDesc: the editable scene document (docs/architecture.md, "From JSON to
+// pixels"). Plain structs with defaults, references by name, serialised to JSON
+// by document/json_io. Every struct lists its parameters once in visit_params
+// (document/params.h).
 // Closed sets are std::variants whose alternatives carry their JSON "type" tag.
 #pragma once
 
@@ -26,6 +27,7 @@ struct ImageTextureDesc {
   std::string path;     // relative to the scene file; PNG/JPEG/HDR through stb
   Color scale{1.f};     // multiplies the texel
   bool srgb = true;     // 8-bit images are sRGB-encoded unless told otherwise
+  bool operator==(const ImageTextureDesc&) const = default;
 };
 template <class V> void visit_params(ImageTextureDesc& d, V& v) {
   v(required(path("path", "Image file, relative to the scene file")), d.path);
@@ -38,6 +40,7 @@ struct CheckerTextureDesc {
   Color even{0.9f};
   Color odd{0.1f};
   float scale = 10.f;  // squares per unit of uv
+  bool operator==(const CheckerTextureDesc&) const = default;
 };
 template <class V> void visit_params(CheckerTextureDesc& d, V& v) {
   v(color("even", 1e6, "Colour of even squares"), d.even);
@@ -52,6 +55,7 @@ using ColorInput = std::variant<Color, ImageTextureDesc, CheckerTextureDesc>;
 struct DiffuseDesc {
   static constexpr std::string_view type_name = "diffuse";
   ColorInput albedo = Color(0.8f);
+  bool operator==(const DiffuseDesc&) const = default;
 };
 template <class V> void visit_params(DiffuseDesc& d, V& v) {
   v(color_input("albedo", "Lambertian reflectance"), d.albedo);
@@ -61,6 +65,7 @@ struct ConductorDesc {
   static constexpr std::string_view type_name = "conductor";
   ColorInput color = Color(0.95f);  // reflectance at normal incidence (F0)
   float roughness = 0.f;            // GGX, perceptual: alpha = roughness^2; 0 is a mirror
+  bool operator==(const ConductorDesc&) const = default;
 };
 template <class V> void visit_params(ConductorDesc& d, V& v) {
   v(color_input("color", "Reflectance at normal incidence (Schlick F0)"), d.color);
@@ -72,6 +77,7 @@ struct DielectricDesc {
   float ior = 1.5f;
   float roughness = 0.f;
   Color tint{1.f};  // multiplies transmitted light
+  bool operator==(const DielectricDesc&) const = default;
 };
 template <class V> void visit_params(DielectricDesc& d, V& v) {
   v(number("ior", 1.0001, 4, "Index of refraction of the inside"), d.ior);
@@ -84,6 +90,7 @@ struct EmissiveDesc {
   ColorInput color = Color(1.f);
   float strength = 1.f;  // radiance = color * strength
   bool two_sided = false;
+  bool operator==(const EmissiveDesc&) const = default;
 };
 template <class V> void visit_params(EmissiveDesc& d, V& v) {
   v(color_input("color", "Emitted colour"), d.color);
@@ -94,6 +101,7 @@ template <class V> void visit_params(EmissiveDesc& d, V& v) {
 struct UnlitDesc {
   static constexpr std::string_view type_name = "unlit";
   ColorInput color = Color(1.f);
+  bool operator==(const UnlitDesc&) const = default;
 };
 template <class V> void visit_params(UnlitDesc& d, V& v) {
   v(color_input("color", "Colour returned to any ray that hits; ignores light"), d.color);
@@ -102,6 +110,7 @@ template <class V> void visit_params(UnlitDesc& d, V& v) {
 struct TransparentDesc {
   static constexpr std::string_view type_name = "transparent";
   Color tint{1.f};
+  bool operator==(const TransparentDesc&) const = default;
 };
 template <class V> void visit_params(TransparentDesc& d, V& v) {
   v(color("tint", 1, "Multiplies light passing straight through"), d.tint);
@@ -133,6 +142,7 @@ struct ToonDesc {
   float rim_threshold = 0.5f;
   bool receive_indirect = false;        // add indirect light (bands stay on direct light)
   bool bounce_indirect = true;          // other surfaces see it as diffuse
+  bool operator==(const ToonDesc&) const = default;
 };
 template <class V> void visit_params(ToonDesc& d, V& v) {
   v(color_input("color", "Lit colour"), d.color);
@@ -163,6 +173,7 @@ struct MixDesc {
   std::string a;  // material names
   std::string b;
   ColorInput factor = Color(0.5f);  // 0 = all a, 1 = all b
+  bool operator==(const MixDesc&) const = default;
 };
 template <class V> void visit_params(MixDesc& d, V& v) {
   v(required(text("a", "Material used where the factor is 0")), d.a);
@@ -180,6 +191,7 @@ struct LineOverrideDesc {
   float width_scale = 1.f;
   bool override_color = false;
   Color color{0.f};
+  bool operator==(const LineOverrideDesc&) const = default;
 };
 template <class V> void visit_params(LineOverrideDesc& d, V& v) {
   v(toggle("exclude", "This surface produces no outlines"), d.exclude);
@@ -193,6 +205,7 @@ struct MaterialDesc {
   std::string name;
   MaterialVariant data = DiffuseDesc{};
   LineOverrideDesc lines;
+  bool operator==(const MaterialDesc&) const = default;
 };
 
 // ---------------------------------------------------------------- shapes
@@ -200,6 +213,7 @@ struct SphereDesc {
   static constexpr std::string_view type_name = "sphere";
   Point3 center{0.f};
   float radius = 1.f;
+  bool operator==(const SphereDesc&) const = default;
 };
 template <class V> void visit_params(SphereDesc& d, V& v) {
   v(point("center", "Centre in object space"), d.center);
@@ -211,6 +225,7 @@ struct QuadDesc {
   Point3 corner{0.f};
   Vec3 edge_u{1.f, 0.f, 0.f};
   Vec3 edge_v{0.f, 0.f, 1.f};  // normal = normalize(cross(edge_u, edge_v))
+  bool operator==(const QuadDesc&) const = default;
 };
 template <class V> void visit_params(QuadDesc& d, V& v) {
   v(point("corner", "One corner"), d.corner);
@@ -222,6 +237,7 @@ struct BoxDesc {
   static constexpr std::string_view type_name = "box";
   Point3 min{0.f};
   Point3 max{1.f};
+  bool operator==(const BoxDesc&) const = default;
 };
 template <class V> void visit_params(BoxDesc& d, V& v) {
   v(point("min", "Minimum corner"), d.min);
@@ -231,6 +247,7 @@ template <class V> void visit_params(BoxDesc& d, V& v) {
 struct MeshDesc {
   static constexpr std::string_view type_name = "mesh";
   std::string path;  // Wavefront OBJ, relative to the scene file
+  bool operator==(const MeshDesc&) const = default;
 };
 template <class V> void visit_params(MeshDesc& d, V& v) {
   v(required(path("path", "Wavefront OBJ file, relative to the scene file")), d.path);
@@ -242,6 +259,7 @@ using ShapeVariant = std::variant<SphereDesc, QuadDesc, BoxDesc, MeshDesc>;
 struct RotationDesc {
   Vec3 axis{0.f, 1.f, 0.f};
   float degrees = 0.f;  // right-handed about axis
+  bool operator==(const RotationDesc&) const = default;
 };
 template <class V> void visit_params(RotationDesc& d, V& v) {
   v(direction("axis", "Rotation axis"), d.axis);
@@ -252,6 +270,7 @@ struct TransformDesc {
   Vec3 scale{1.f};
   std::vector<RotationDesc> rotate;
   Vec3 translate{0.f};
+  bool operator==(const TransformDesc&) const = default;
 };
 
 struct ObjectDesc {
@@ -261,6 +280,7 @@ struct ObjectDesc {
   std::string material;  // name of a MaterialDesc
   bool visible = true;
   LineOverrideDesc lines;
+  bool operator==(const ObjectDesc&) const = default;
 };
 template <class V> void visit_params(ObjectDesc& d, V& v) {
   v(text("name", "Unique object name"), d.name);
@@ -275,6 +295,7 @@ struct PointLightDesc {
   Point3 position{0.f};
   Color color{1.f};
   float intensity = 1.f;  // radiant intensity scale (W/sr)
+  bool operator==(const PointLightDesc&) const = default;
 };
 template <class V> void visit_params(PointLightDesc& d, V& v) {
   v(point("position", "Position"), d.position);
@@ -290,6 +311,7 @@ struct SpotLightDesc {
   float intensity = 1.f;
   float cone_angle = 30.f;     // half-angle in degrees where light ends
   float falloff_angle = 25.f;  // half-angle in degrees where falloff starts
+  bool operator==(const SpotLightDesc&) const = default;
 };
 template <class V> void visit_params(SpotLightDesc& d, V& v) {
   v(point("position", "Position"), d.position);
@@ -305,6 +327,7 @@ struct DirectionalLightDesc {
   Vec3 direction{0.f, -1.f, 0.f};  // direction the light travels
   Color color{1.f};
   float intensity = 1.f;  // irradiance on a surface facing the light
+  bool operator==(const DirectionalLightDesc&) const = default;
 };
 template <class V> void visit_params(DirectionalLightDesc& d, V& v) {
   v(direction("direction", "Direction the light travels"), d.direction);
@@ -317,12 +340,14 @@ using LightVariant = std::variant<PointLightDesc, SpotLightDesc, DirectionalLigh
 struct LightDesc {
   std::string name;
   LightVariant data = PointLightDesc{};
+  bool operator==(const LightDesc&) const = default;
 };
 
 // ---------------------------------------------------------------- environment
 struct ConstantEnvironmentDesc {
   static constexpr std::string_view type_name = "constant";
   Color color{0.f};
+  bool operator==(const ConstantEnvironmentDesc&) const = default;
 };
 template <class V> void visit_params(ConstantEnvironmentDesc& d, V& v) {
   v(color("color", 1e6, "Radiance arriving from every direction"), d.color);
@@ -333,6 +358,7 @@ struct GradientEnvironmentDesc {
   Color zenith{0.5f, 0.7f, 1.f};
   Color horizon{1.f};
   Color nadir{0.2f};
+  bool operator==(const GradientEnvironmentDesc&) const = default;
 };
 template <class V> void visit_params(GradientEnvironmentDesc& d, V& v) {
   v(color("zenith", 1e6, "Radiance straight up (+y)"), d.zenith);
@@ -350,6 +376,7 @@ struct CameraDesc {
   float vfov = 40.f;           // vertical field of view, degrees
   float aperture = 0.f;        // lens diameter; 0 is a pinhole
   float focus_distance = 0.f;  // 0 focuses on look_at
+  bool operator==(const CameraDesc&) const = default;
 };
 template <class V> void visit_params(CameraDesc& d, V& v) {
   v(point("look_from", "Eye position"), d.look_from);
@@ -376,20 +403,21 @@ struct RenderSettings {
   PainterlyFilter painterly = PainterlyFilter::none;
   float painterly_radius = 4.f;     // pixels at the reference height 1080
   float painterly_sharpness = 8.f;  // sector weighting exponent
+  bool operator==(const RenderSettings&) const = default;
 };
 template <class V> void visit_params(RenderSettings& d, V& v) {
-  v(integer("width", 1, 16384, "Image width in pixels"), d.width);
-  v(integer("height", 1, 16384, "Image height in pixels"), d.height);
-  v(integer("spp", 1, 1 << 20, "Samples per pixel"), d.spp);
-  v(number("time_limit", 0, 1e7, "Stop after this many seconds; 0 means no limit"), d.time_limit);
-  v(integer("max_depth", 1, 1024, "Maximum path length in bounces"), d.max_depth);
-  v(integer("seed", 0, 2147483647, "Seed of every random decision"), d.seed);
-  v(number("clamp", 0, 1e9, "Clamp sample luminance to this value; 0 is off"), d.clamp);
-  v(choice("filter", kPixelFilterNames, "Pixel reconstruction filter"), d.filter);
-  v(number("filter_radius", 0.01, 8, "Filter radius in pixels"), d.filter_radius);
-  v(choice("painterly", kPainterlyFilterNames, "Painterly filter over the resolved image"), d.painterly);
-  v(number("painterly_radius", 0.5, 64, "Painterly filter radius, pixels at 1080 lines"), d.painterly_radius);
-  v(number("painterly_sharpness", 0, 64, "Painterly filter sector sharpness"), d.painterly_sharpness);
+  v(at(Stage::film, integer("width", 1, 16384, "Image width in pixels")), d.width);
+  v(at(Stage::film, integer("height", 1, 16384, "Image height in pixels")), d.height);
+  v(at(Stage::limits, integer("spp", 1, 1 << 20, "Samples per pixel")), d.spp);
+  v(at(Stage::limits, number("time_limit", 0, 1e7, "Stop after this many seconds; 0 means no limit")), d.time_limit);
+  v(at(Stage::sampling, integer("max_depth", 1, 1024, "Maximum path length in bounces")), d.max_depth);
+  v(at(Stage::sampling, integer("seed", 0, 2147483647, "Seed of every random decision")), d.seed);
+  v(at(Stage::sampling, number("clamp", 0, 1e9, "Clamp sample luminance to this value; 0 is off")), d.clamp);
+  v(at(Stage::sampling, choice("filter", kPixelFilterNames, "Pixel reconstruction filter")), d.filter);
+  v(at(Stage::sampling, number("filter_radius", 0.01, 8, "Filter radius in pixels")), d.filter_radius);
+  v(at(Stage::resolve, choice("painterly", kPainterlyFilterNames, "Painterly filter over the resolved image")), d.painterly);
+  v(at(Stage::resolve, number("painterly_radius", 0.5, 64, "Painterly filter radius, pixels at 1080 lines")), d.painterly_radius);
+  v(at(Stage::resolve, number("painterly_sharpness", 0, 64, "Painterly filter sector sharpness")), d.painterly_sharpness);
 }
 
 // ---------------------------------------------------------------- the document
@@ -404,6 +432,7 @@ struct SceneDesc {
   std::vector<StrokeEmitterDesc> strokes;
   // Directory that relative asset paths resolve against (the scene file's folder).
   std::filesystem::path base_dir;
+  bool operator==(const SceneDesc&) const = default;
 };
 
 }  // namespace inkray

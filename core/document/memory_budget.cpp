@@ -37,6 +37,7 @@ constexpr std::uint64_t kBytesPerBrushTexel = 6;
 
 struct Estimator {
   const SceneDesc& scene;
+  const ImageSizeReader& read_size;
   MemoryEstimate estimate;
   std::set<fs::path> images_seen;  // a texture used by several materials is decoded once
 
@@ -51,7 +52,7 @@ struct Estimator {
     const fs::path file = scene.base_dir / path;
     if (!images_seen.insert(file.lexically_normal()).second) return;
     std::string error;
-    const auto size = read_image_size(file, &error);
+    const auto size = read_size(file, &error);
     if (!size) return;
     estimate.texels += size->texels();
     add(at, std::uint64_t(size->texels()) * bytes_per_texel);
@@ -61,8 +62,8 @@ struct Estimator {
 
 }  // namespace
 
-MemoryEstimate estimate_memory(const SceneDesc& scene) {
-  Estimator e{scene, {}, {}};
+MemoryEstimate estimate_memory(const SceneDesc& scene, const ImageSizeReader& read_size) {
+  Estimator e{scene, read_size, {}, {}};
   e.add("film", std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height) * kFilmBytesPerPixel);
   for (const AssetRef& asset : collect_assets(scene)) {
     if (asset.kind == AssetKind::image) e.image(asset.at, asset.written, kBytesPerTexel);
@@ -109,9 +110,10 @@ std::string format_bytes(std::uint64_t bytes) {
   return text;
 }
 
-void check_memory_budget(const SceneDesc& scene, std::uint64_t limit, std::vector<std::string>& errors) {
+void check_memory_budget(const SceneDesc& scene, std::uint64_t limit, std::vector<std::string>& errors,
+                         const ImageSizeReader& read_size) {
   if (limit == 0) limit = default_memory_limit();
-  const MemoryEstimate estimate = estimate_memory(scene);
+  const MemoryEstimate estimate = estimate_memory(scene, read_size);
   if (estimate.texels > kMaxSceneTexels) {
     errors.push_back("the scene's images have " + std::to_string(estimate.texels) +
                      " texels together; a scene may decode at most " + std::to_string(kMaxSceneTexels) +

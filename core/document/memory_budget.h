@@ -5,8 +5,10 @@
 #pragma once
 
 #include "core/document/desc.h"
+#include "core/image/image_header.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,9 +29,12 @@ struct MemoryEstimate {
   std::vector<MemoryItem> items;  // largest first
 };
 
+// How image sizes are found: read_image_size, or a compiler's cache of them.
+using ImageSizeReader = std::function<std::optional<ImageSize>(const std::filesystem::path&, std::string*)>;
+
 // Reads image headers and mesh file sizes only; an unreadable asset counts zero
 // (loading it reports the problem).
-MemoryEstimate estimate_memory(const SceneDesc& scene);
+MemoryEstimate estimate_memory(const SceneDesc& scene, const ImageSizeReader& read_size = read_image_size);
 
 std::uint64_t physical_memory_bytes();
 std::uint64_t default_memory_limit();  // half of physical memory
@@ -39,6 +44,7 @@ std::string format_bytes(std::uint64_t bytes);
 
 // Appends an error naming the largest items when the estimate exceeds `limit`
 // bytes (0: default_memory_limit()) or the images exceed kMaxSceneTexels.
-void check_memory_budget(const SceneDesc& scene, std::uint64_t limit, std::vector<std::string>& errors);
+void check_memory_budget(const SceneDesc& scene, std::uint64_t limit, std::vector<std::string>& errors,
+                         const ImageSizeReader& read_size = read_image_size);
 
 }  // namespace inkray

@@ -22,13 +22,14 @@ struct LineStyleDesc {
   float width = 1.f;  // multiplies OutlineDesc::width
   float opacity = 1.f;
   float threshold = 0.f;  // crease: angle in degrees; depth: relative jump; unused otherwise
+  bool operator==(const LineStyleDesc&) const = default;
 };
 template <class V> void visit_params(LineStyleDesc& d, V& v) {
-  v(toggle("enabled", "Draw this line type"), d.enabled);
-  v(color("color", 1e3, "Line colour (applied when the image is resolved: no re-render)"), d.color);
-  v(number("width", 0, 100, "Multiplies the outline width"), d.width);
-  v(number("opacity", 0, 1, "Line opacity"), d.opacity);
-  v(number("threshold", 0, 1e6, "Crease: angle in degrees; depth: relative distance jump"), d.threshold);
+  v(at(Stage::sampling, toggle("enabled", "Draw this line type")), d.enabled);
+  v(at(Stage::resolve, color("color", 1e3, "Line colour (applied when the image is resolved: no re-render)")), d.color);
+  v(at(Stage::sampling, number("width", 0, 100, "Multiplies the outline width")), d.width);
+  v(at(Stage::resolve, number("opacity", 0, 1, "Line opacity")), d.opacity);
+  v(at(Stage::sampling, number("threshold", 0, 1e6, "Crease: angle in degrees; depth: relative distance jump")), d.threshold);
 }
 
 struct OutlineDesc {
@@ -51,19 +52,21 @@ struct OutlineDesc {
     return enabled && (silhouette.enabled || object.enabled || material.enabled || crease.enabled ||
                        depth.enabled || intersection.enabled);
   }
+  bool operator==(const OutlineDesc&) const = default;
 };
 template <class V> void visit_params(OutlineDesc& d, V& v) {
-  v(toggle("enabled", "Draw outlines"), d.enabled);
-  v(integer("quality", 1, 16, "Stencil rays per camera sample: more give clean lines in fewer samples"), d.quality);
-  v(number("width", 0, 1000, "Line width in `unit`"), d.width);
-  v(choice("unit", kLineWidthUnitNames,
-           "pixels (at reference_height), percent of image height, or world units"),
+  v(at(Stage::sampling, toggle("enabled", "Draw outlines")), d.enabled);
+  v(at(Stage::sampling, integer("quality", 1, 16, "Stencil rays per camera sample: more give clean lines in fewer samples")), d.quality);
+  v(at(Stage::sampling, number("width", 0, 1000, "Line width in `unit`")), d.width);
+  v(at(Stage::sampling, choice("unit", kLineWidthUnitNames,
+                               "pixels (at reference_height), percent of image height, or world units")),
     d.unit);
-  v(number("reference_height", 1, 1e5, "Image height that `pixels` refer to"), d.reference_height);
-  v(number("distance_falloff", 0, 4, "Width shrinks as (falloff_start / distance)^falloff beyond falloff_start"),
+  v(at(Stage::sampling, number("reference_height", 1, 1e5, "Image height that `pixels` refer to")), d.reference_height);
+  v(at(Stage::sampling, number("distance_falloff", 0, 4,
+                               "Width shrinks as (falloff_start / distance)^falloff beyond falloff_start")),
     d.distance_falloff);
-  v(number("falloff_start", 0, 1e9, "Distance where the falloff begins"), d.falloff_start);
-  v(toggle("in_reflections", "Lines appear in mirrors and through glass"), d.in_reflections);
+  v(at(Stage::sampling, number("falloff_start", 0, 1e9, "Distance where the falloff begins")), d.falloff_start);
+  v(at(Stage::sampling, toggle("in_reflections", "Lines appear in mirrors and through glass")), d.in_reflections);
   v(group("silhouette", "Where a surface meets the background or a surface behind it"), d.silhouette);
   v(group("object", "Where one object meets another"), d.object);
   v(group("material", "Where materials change"), d.material);
@@ -94,6 +97,7 @@ struct StrokeEmitterDesc {
   float pressure = 0.7f;    // alpha falloff along the stroke
   int segments = 8;         // ribbon segments along each stroke
   float offset = 0.f;       // lift above the surface, world units; 0 picks one from the object's size
+  bool operator==(const StrokeEmitterDesc&) const = default;
 };
 template <class V> void visit_params(StrokeEmitterDesc& d, V& v) {
   v(text("name", "Unique emitter name"), d.name);

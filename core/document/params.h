@@ -1,9 +1,10 @@
-// One parameter list per description struct (DESIGN principle 8). Each struct
+// One parameter list per description struct (docs/architecture.md, "The shape"). Each struct
 // has a free function `visit_params(Desc&, Visitor&)` that names every editable
 // field once with its range, default and doc; JSON reading and writing,
 // validation messages and the editor's widgets are all visitors over it.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <span>
 #include <string_view>
@@ -31,6 +32,26 @@ enum class ParamKind {
 // compile_scene bounds the transformed geometry far below that (kMaxWorldCoordinate).
 inline constexpr double kMaxCoordinate = 1e9;
 
+// What a change to a parameter makes stale, from the cheapest to the dearest.
+// Each entry of a parameter list has one: its own (`at`), or that of the section
+// of the document it belongs to (docs/architecture.md, "Stages").
+enum class Stage : unsigned char {
+  inherit,   // the section's: materials[i] material, objects[i] object, lights and environment light, ...
+  limits,    // render limits (samples, time): rendering goes on
+  resolve,   // re-composite the accumulated film: line colours and opacity, painterly filter
+  camera,    // camera rays: accumulation restarts, nothing is rebuilt
+  sampling,  // what every sample computes (depth, seed, clamp, pixel filter, which lines): restart
+  film,      // resolution: accumulation restarts at the new size
+  material,  // one material's table entry, and the colours of strokes painted from it
+  light,     // the light list and the environment
+  object,    // one object's placement, visibility, material, overrides: the top-level BVH
+  geometry,  // one object's shape or mesh file: its own BVH
+  strokes,   // one stroke emitter: its strokes grow again
+};
+inline constexpr int kStageCount = int(Stage::strokes) + 1;
+inline constexpr std::array<std::string_view, kStageCount> kStageNames = {
+    "inherit", "limits", "resolve", "camera", "sampling", "film", "material", "light", "object", "geometry", "strokes"};
+
 struct Param {
   std::string_view name;
   std::string_view doc;
@@ -39,6 +60,7 @@ struct Param {
   double max = std::numeric_limits<double>::infinity();
   std::span<const std::string_view> choices = {};  // names for ParamKind::choice, indexed by enum value
   bool required = false;                           // a JSON reader reports it when absent
+  Stage stage = Stage::inherit;                    // what a change to it makes stale
 };
 
 // Helpers to keep parameter lists short and readable.
@@ -73,6 +95,10 @@ constexpr Param color_list(std::string_view name, std::string_view doc) {
 constexpr Param group(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::group}; }
 constexpr Param required(Param p) {
   p.required = true;
+  return p;
+}
+constexpr Param at(Stage stage, Param p) {
+  p.stage = stage;
   return p;
 }
 

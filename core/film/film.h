@@ -57,6 +57,8 @@ class Film {
   void add_first_hit(int x, int y, const FirstHit& hit);
   void add_lines(int x, int y, const LineSample& lines);
   void clear();
+  // Clears the pixels in [x0,x1) x [y0,y1) only (a render region restarting).
+  void clear_region(int x0, int y0, int x1, int y1);
 
   uint64_t nonfinite_samples() const { return nonfinite_.load(std::memory_order_relaxed); }
   uint32_t samples_at(int x, int y) const;

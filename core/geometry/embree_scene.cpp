@@ -6,6 +6,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdio>
@@ -46,17 +47,11 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
   if (sphere->intersect(ray, r->tnear, r->tfar)) r->tfar = -kInfinity;
 }
 
-// What an alpha-tested geometry's filter callbacks read (its Embree user data).
-struct AlphaTested {
-  const TriangleMesh* mesh = nullptr;
-  const AlphaMask* mask = nullptr;
-};
-
 // Whether a candidate hit on an alpha-tested mesh counts. The uniform number
 // comes from a hash of the ray's bits and the triangle: the same ray always
 // decides the same way (Embree may report a triangle twice under spatial
 // splits), while the many rays of a pixel sample the coverage.
-bool alpha_accepts(const AlphaTested& g, const RTCFilterFunctionNArguments* args) {
+bool alpha_accepts(const TriangleMesh& mesh, const AlphaMask& mask, const RTCFilterFunctionNArguments* args) {
   RTCRayN* ray = args->ray;
   RTCHitN* hit = args->hit;
   const unsigned n = args->N;
@@ -64,18 +59,17 @@ bool alpha_accepts(const AlphaTested& g, const RTCFilterFunctionNArguments* args
   const float b1 = RTCHitN_u(hit, n, 0), b2 = RTCHitN_v(hit, n, 0), b0 = 1.f - b1 - b2;
   const Point3 o(RTCRayN_org_x(ray, n, 0), RTCRayN_org_y(ray, n, 0), RTCRayN_org_z(ray, n, 0));
   const Vec3 d(RTCRayN_dir_x(ray, n, 0), RTCRayN_dir_y(ray, n, 0), RTCRayN_dir_z(ray, n, 0));
-  if (g.mask->layer_thickness > 0.f) {
+  if (mask.layer_thickness > 0.f) {
     // A ray leaving the surface the layer lies on (or the layer itself) starts
     // within the layer's thickness of the triangle's plane: it passes through.
     const Vec3 ng(RTCHitN_Ng_x(hit, n, 0), RTCHitN_Ng_y(hit, n, 0), RTCHitN_Ng_z(hit, n, 0));
     const float ng_len = glm::length(ng);
     const float height = RTCRayN_tfar(ray, n, 0) * std::abs(glm::dot(d, ng));
-    if (height < g.mask->layer_thickness * ng_len) return false;
+    if (height < mask.layer_thickness * ng_len) return false;
   }
-  const TriangleMesh& mesh = *g.mesh;
   const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
   const Vec2 uv = b0 * mesh.uvs[idx[0]] + b1 * mesh.uvs[idx[1]] + b2 * mesh.uvs[idx[2]];
-  const float alpha = g.mask->coverage(uv, prim);
+  const float alpha = mask.coverage(uv, prim);
   if (alpha >= 1.f) return true;
   if (alpha <= 0.f) return false;
   uint32_t h = hash_combine(std::bit_cast<uint32_t>(o.x), std::bit_cast<uint32_t>(o.y),
@@ -84,10 +78,12 @@ bool alpha_accepts(const AlphaTested& g, const RTCFilterFunctionNArguments* args
   return u32_to_unit_float(h) < alpha;
 }
 
-// We only call the single-ray API, so filters see N == 1.
+// We only call the single-ray API, so filters see N == 1. The user data is the
+// ShapeBvh, whose shape is the mesh (in the space the filter's ray is in).
 void alpha_filter(const RTCFilterFunctionNArguments* args) {
   if (!args->valid[0]) return;
-  if (!alpha_accepts(*static_cast<const AlphaTested*>(args->geometryUserPtr), args)) args->valid[0] = 0;
+  const auto* bvh = static_cast<const ShapeBvh*>(args->geometryUserPtr);
+  if (!alpha_accepts(std::get<TriangleMesh>(bvh->shape()), *bvh->mask(), args)) args->valid[0] = 0;
 }
 
 // Debian's Embree is built with assertions: a ray whose origin is not finite or
@@ -156,70 +152,111 @@ RTCDevice shared_embree_device() {
   return device;
 }
 
-struct EmbreeScene::Impl {
-  RTCScene scene = nullptr;
-  bool committed = false;
-  std::vector<AlphaTested> alpha_tested;  // filter user data; sized once in commit(), so addresses hold
-};
+namespace {
 
-EmbreeScene::EmbreeScene() : impl_(std::make_unique<Impl>()) {
-  impl_->scene = rtcNewScene(shared_embree_device());
-  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+RTCScene new_embree_scene(RTCBuildQuality quality) {
+  RTCScene scene = rtcNewScene(shared_embree_device());
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene, quality);
+  return scene;
 }
 
-EmbreeScene::~EmbreeScene() {
-  if (impl_ && impl_->scene) rtcReleaseScene(impl_->scene);
+// Embree's instance transform: the 3x4 column-major part of the affine matrix.
+std::array<float, 12> embree_transform(const Transform& t) {
+  std::array<float, 12> xfm{};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) xfm[size_t(3 * c + r)] = t.m[c][r];
+  return xfm;
 }
+
+}  // namespace
+
+ShapeBvh::ShapeBvh(std::shared_ptr<const Shape> shape, std::shared_ptr<const AlphaMask> mask)
+    : shape_(std::move(shape)), mask_(std::move(mask)) {
+  const auto* mesh = std::get_if<TriangleMesh>(shape_.get());
+  if (mask_ && (!mesh || mesh->uvs.size() < mesh->vertex_count()))
+    throw std::invalid_argument("ShapeBvh: an alpha-tested shape must be a mesh with a uv per vertex");
+  RTCDevice device = shared_embree_device();
+  scene_ = new_embree_scene(RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geom = nullptr;
+  if (mesh) {
+    geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->positions.data(), 0,
+                               sizeof(Point3), mesh->vertex_count());
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh->indices.data(), 0,
+                               3 * sizeof(uint32_t), mesh->triangle_count());
+    if (mask_) {
+      rtcSetGeometryUserData(geom, this);
+      rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
+      rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
+    }
+  } else {
+    geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geom, 1);
+    rtcSetGeometryUserData(geom, const_cast<Sphere*>(&std::get<Sphere>(*shape_)));
+    rtcSetGeometryBoundsFunction(geom, sphere_bounds, nullptr);
+    rtcSetGeometryIntersectFunction(geom, sphere_intersect);
+    rtcSetGeometryOccludedFunction(geom, sphere_occluded);
+  }
+  rtcCommitGeometry(geom);
+  rtcAttachGeometryByID(scene_, geom, 0);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(scene_);
+}
+
+ShapeBvh::~ShapeBvh() { rtcReleaseScene(scene_); }
+
+EmbreeScene::Impl::~Impl() {
+  if (scene) rtcReleaseScene(scene);
+}
+
+EmbreeScene::EmbreeScene() : impl_(std::make_shared<Impl>()) {}
 
 uint32_t EmbreeScene::add(Shape shape) {
-  if (impl_->committed) throw std::logic_error("EmbreeScene::add after commit");
-  shapes_.push_back(std::move(shape));
-  masks_.push_back(nullptr);
-  return uint32_t(shapes_.size() - 1);
+  auto world = std::make_shared<const Shape>(std::move(shape));
+  return add(std::make_shared<const ShapeBvh>(world), Transform{}, world);
 }
 
 uint32_t EmbreeScene::add(TriangleMesh mesh, std::shared_ptr<const AlphaMask> mask) {
-  if (mask && mesh.uvs.size() < mesh.vertex_count())
-    throw std::invalid_argument("EmbreeScene::add: an alpha-tested mesh needs a uv per vertex");
-  const uint32_t id = add(Shape(std::move(mesh)));
-  masks_[id] = std::move(mask);
-  return id;
+  auto world = std::make_shared<const Shape>(std::move(mesh));
+  return add(std::make_shared<const ShapeBvh>(world, std::move(mask)), Transform{}, world);
+}
+
+uint32_t EmbreeScene::add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
+                          std::shared_ptr<const Shape> world) {
+  if (impl_->committed) throw std::logic_error("EmbreeScene::add after commit");
+  impl_->instances.push_back({std::move(bvh), to_world, std::move(world)});
+  return uint32_t(impl_->instances.size() - 1);
 }
 
 void EmbreeScene::commit() {
-  // Geometries are created here, once every shape has its final address.
+  if (impl_->committed) throw std::logic_error("EmbreeScene::commit twice");
   RTCDevice device = shared_embree_device();
-  impl_->alpha_tested.reserve(shapes_.size());
-  for (uint32_t id = 0; id < shapes_.size(); ++id) {
-    RTCGeometry geom = nullptr;
-    if (auto* mesh = std::get_if<TriangleMesh>(&shapes_[id])) {
-      geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-      rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->positions.data(), 0,
-                                 sizeof(Point3), mesh->vertex_count());
-      rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh->indices.data(), 0,
-                                 3 * sizeof(uint32_t), mesh->triangle_count());
-      if (masks_[id]) {
-        impl_->alpha_tested.push_back({mesh, masks_[id].get()});
-        rtcSetGeometryUserData(geom, &impl_->alpha_tested.back());
-        rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
-        rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
-      }
-    } else {
-      auto& sphere = std::get<Sphere>(shapes_[id]);
-      geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-      rtcSetGeometryUserPrimitiveCount(geom, 1);
-      rtcSetGeometryUserData(geom, &sphere);
-      rtcSetGeometryBoundsFunction(geom, sphere_bounds, nullptr);
-      rtcSetGeometryIntersectFunction(geom, sphere_intersect);
-      rtcSetGeometryOccludedFunction(geom, sphere_occluded);
-    }
+  // Few instances, rebuilt on every move of an object: a fast build matters more
+  // than the last few percent of traversal speed, which the bottom levels decide.
+  impl_->scene = new_embree_scene(RTC_BUILD_QUALITY_MEDIUM);
+  for (uint32_t id = 0; id < impl_->instances.size(); ++id) {
+    const Instance& instance = impl_->instances[id];
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geom, instance.bvh->embree_scene());
+    rtcSetGeometryTimeStepCount(geom, 1);
+    const std::array<float, 12> xfm = embree_transform(instance.to_world);
+    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl_->scene, geom, id);
     rtcReleaseGeometry(geom);
   }
   rtcCommitScene(impl_->scene);
   impl_->committed = true;
+}
+
+bool EmbreeScene::same_instances(const EmbreeScene& other) const {
+  const auto& a = impl_->instances;
+  const auto& b = other.impl_->instances;
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].bvh != b[i].bvh || a[i].world != b[i].world || a[i].to_world.m != b[i].to_world.m) return false;
+  return true;
 }
 
 bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit) const {
@@ -233,7 +270,7 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit) const {
   rtcIntersect1(impl_->scene, &context, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   hit->t = rh.ray.tfar;
-  hit->geometry = rh.hit.geomID;
+  hit->geometry = rh.hit.instID[0];
   hit->prim = rh.hit.primID;
   hit->barycentric = {rh.hit.u, rh.hit.v};
   return true;
@@ -249,7 +286,7 @@ bool EmbreeScene::occluded(const Ray& ray, float t_max) const {
 }
 
 SurfaceInteraction EmbreeScene::interaction(const Ray& ray, const Hit& hit) const {
-  const Shape& shape = shapes_[hit.geometry];
+  const Shape& shape = *impl_->instances[hit.geometry].world;
   SurfaceInteraction si = std::holds_alternative<TriangleMesh>(shape)
                               ? triangle_interaction(std::get<TriangleMesh>(shape), hit, ray)
                               : std::get<Sphere>(shape).interaction(ray, hit.t);

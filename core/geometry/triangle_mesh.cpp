@@ -47,6 +47,13 @@ TriangleMesh make_mesh(std::vector<Point3> positions, std::vector<Normal3> norma
   return mesh;
 }
 
+TriangleMesh transformed(const TriangleMesh& mesh, const Transform& to_world) {
+  TriangleMesh out = mesh;
+  for (size_t v = 0; v < out.vertex_count(); ++v) out.positions[v] = to_world.point(out.positions[v]);
+  for (Normal3& n : out.normals) n = glm::normalize(to_world.normal(n));
+  return out;
+}
+
 TriangleMesh make_quad(const Point3& corner, const Vec3& edge_u, const Vec3& edge_v, const Transform& to_world) {
   std::vector<Point3> p = {corner, corner + edge_u, corner + edge_u + edge_v, corner + edge_v};
   std::vector<Vec2> uv = {{0.f, 0.f}, {1.f, 0.f}, {1.f, 1.f}, {0.f, 1.f}};

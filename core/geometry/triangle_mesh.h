@@ -38,6 +38,8 @@ MeshShading interpolate_shading(const TriangleMesh& mesh, uint32_t tri, float b1
 // Builds a mesh from unpadded arrays, transformed to world space.
 TriangleMesh make_mesh(std::vector<Point3> positions, std::vector<Normal3> normals, std::vector<Vec2> uvs,
                        std::vector<uint32_t> indices, const Transform& to_world);
+// The mesh moved by to_world, exactly as make_mesh would have built it there.
+TriangleMesh transformed(const TriangleMesh& mesh, const Transform& to_world);
 TriangleMesh make_quad(const Point3& corner, const Vec3& edge_u, const Vec3& edge_v, const Transform& to_world);
 // Six outward-facing quads.
 TriangleMesh make_box(const Point3& lo, const Point3& hi, const Transform& to_world);

@@ -3,7 +3,6 @@
 #include "core/film/aov_display.h"
 #include "core/film/resolve.h"
 #include "core/compiler/compile.h"
-#include "core/document/json_io.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,13 +21,6 @@ AovSet aovs_for(const ViewportView& view) {
   aovs.add(Aov::object_id);  // the selection highlight reads it
   if (view.display >= 0 && view.display < int(kAovNames.size())) aovs.add(Aov(view.display));
   return aovs;
-}
-
-// The document without its camera: equal texts mean only the camera moved.
-std::string without_camera(const SceneDesc& scene) {
-  SceneDesc copy = scene;
-  copy.camera = CameraDesc{};
-  return scene_to_string(copy);
 }
 
 double ms_since(std::chrono::steady_clock::time_point t) {
@@ -154,45 +146,45 @@ void ProgressiveRenderer::run() {
       region = region_;
       paused = paused_;
     }
-    if (desc && scene && without_camera(*desc) == compiled_text_) {
-      // Only the camera moved: keep the compiled scene (a stroke scene takes
-      // hundreds of milliseconds to compile) and move the rays.
-      camera_ = Camera(desc->camera, scene->settings.width, scene->settings.height);
-      std::lock_guard lock(mutex_);
-      revision_ = revision;
-      revision_time_ = revision_time;
-      restart = true;
-      desc.reset();
-    }
+    bool keep_film = false;
     if (desc) {
-      compiled_text_ = without_camera(*desc);
-      camera_.reset();
+      // The compiler redoes only what the edit touched (docs/architecture.md, "Stages"):
+      // a camera move or a material edit costs no rebuild of the geometry.
       CompileOptions options;
       options.cancel = Cancel(&superseded_);
-      CompileResult compiled = compile_scene(*desc, options);
+      CompileResult compiled = session_.pool().run([&] { return compiler_.compile(*desc, options); });
       std::lock_guard lock(mutex_);
-      if (compiled.cancelled) {
-        compiled_text_.clear();  // nothing was built for it
-        continue;                // the newer document is waiting
-      }
+      if (compiled.cancelled) continue;  // the newer document is waiting
       if (!compiled.scene) {
         messages_.insert(messages_.end(), compiled.errors.begin(), compiled.errors.end());
         continue;  // the last good scene stays on screen
       }
+      // Line colours, the painterly filter and render limits are read when the film
+      // is resolved: the samples so far stay, and the image is composited again.
+      keep_film = scene && !restart && compiled.changes.within({Stage::resolve, Stage::limits});
       scene = scene_ = compiled.scene;
       revision_ = revision;
       revision_time_ = revision_time;
-      restart = true;
+      if (!keep_film) restart = true;
     }
     if (!scene) continue;
+    const bool region_only = restart && !desc;  // set_region() alone asked for it
     if (reencode && (aovs_for(view).bits & ~aovs_.bits) != 0) restart = true;
-    if (restart) {
+    if (restart && region_only && !region.empty() && session_.divisor() == 1 && aovs_for(view).bits == aovs_.bits) {
+      // A region over the full-resolution film: the pixels around it keep their samples.
+      const int w = session_.film().width(), h = session_.film().height();
+      session_.restart_region(int(std::floor(region.x0 * w)), int(std::floor(region.y0 * h)),
+                              int(std::ceil(region.x1 * w)), int(std::ceil(region.y1 * h)));
+      curve_.clear();
+      ++accumulation_;
+      active_ = true;
+    } else if (restart) {
       aovs_ = aovs_for(view);
       curve_.clear();
       first_publish_ = true;
       const int divisor = region.empty() ? kFirstPreviewDivisor : 1;
       session_.set_scene(scene, aovs_, divisor);
-      if (camera_) session_.set_camera_override(*camera_);
+      ++accumulation_;
       const int w = session_.film().width(), h = session_.film().height();
       if (region.empty()) {
         session_.set_region(0, 0, 0, 0);
@@ -201,6 +193,10 @@ void ProgressiveRenderer::run() {
                             int(std::ceil(region.x1 * w)), int(std::ceil(region.y1 * h)));
       }
       active_ = true;
+    } else if (keep_film) {
+      session_.update_scene(scene);
+      active_ = true;
+      if (session_.stats().passes > 0) publish_snapshot(scene, view, limits, false);
     } else if (reencode) {
       active_ = true;  // limits may have been raised; limits_reached() decides below
       if (session_.stats().passes > 0) publish_snapshot(scene, view, limits, false);
@@ -219,7 +215,7 @@ void ProgressiveRenderer::run() {
     publish_snapshot(scene, view, limits, done);
     if (divisor > 1) {
       session_.set_scene(scene, aovs_, divisor / 2);
-      if (camera_) session_.set_camera_override(*camera_);
+      ++accumulation_;
     } else if (done) {
       active_ = false;
     }
@@ -262,6 +258,7 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
   snap->stats = session_.stats();
   snap->error_curve = curve_;
   snap->finished = finished;
+  snap->accumulation = accumulation_;
   std::lock_guard lock(mutex_);
   snap->revision = revision_;
   snap->submit_to_publish_ms = ms_since(revision_time_);

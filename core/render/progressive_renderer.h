@@ -7,6 +7,7 @@
 
 #include "core/film/film.h"
 #include "core/render/display_encode.h"
+#include "core/compiler/compile.h"
 #include "core/render/render_session.h"
 #include "core/document/desc.h"
 
@@ -58,6 +59,10 @@ struct ViewportSnapshot {
   std::vector<ErrorSample> error_curve;  // full-resolution passes of this revision
   bool finished = false;                  // a limit was reached; the worker idles
   uint64_t revision = 0;                  // the submit() this image shows
+  // Which accumulation of samples this image shows: it changes whenever the film
+  // restarts (a preview, a new document that needs new samples), and stays across
+  // edits that re-composite the samples already taken (docs/architecture.md, "Stages").
+  uint64_t accumulation = 0;
   double submit_to_publish_ms = 0.0;      // latency from that submit() to this snapshot
 };
 
@@ -115,11 +120,11 @@ class ProgressiveRenderer {
   uint64_t generation_ = 0;
 
   // Worker-only state.
-  std::string compiled_text_;  // the compiled document as JSON with its camera left out
-  std::optional<Camera> camera_;  // set when only the camera changed since the compile
+  SceneCompiler compiler_;  // keeps what it built between the documents of its edits
   uint64_t revision_ = 0;
   std::chrono::steady_clock::time_point revision_time_;
   bool first_publish_ = true, active_ = false;
+  uint64_t accumulation_ = 0;
   AovSet aovs_;
   std::vector<ErrorSample> curve_;
 };

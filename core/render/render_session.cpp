@@ -27,7 +27,6 @@ RenderSession::RenderSession(int threads) : pool_(threads), worker_rays_(size_t(
 void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet aovs, int divisor) {
   scene_ = std::move(scene);
   divisor_ = std::max(divisor, 1);
-  camera_override_.reset();
   const int width = std::max((scene_->settings.width + divisor_ - 1) / divisor_, 1);
   const int height = std::max((scene_->settings.height + divisor_ - 1) / divisor_, 1);
   lines_ = make_line_setup(*scene_);
@@ -66,7 +65,7 @@ void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
   const int sx0 = has_region ? std::max(x0, rx0) : x0, sy0 = has_region ? std::max(y0, ry0) : y0;
   if (has_region) x1 = std::min(x1, rx1), y1 = std::min(y1, ry1);
   const float scale = float(divisor_);
-  const Camera& camera = camera_override_ ? *camera_override_ : scene.camera;
+  const Camera& camera = scene.camera;
   const bool want_first_hit = film_->aovs().any_first_hit();
   const float clamp = scene.settings.clamp;
   const uint32_t seed = uint32_t(scene.settings.seed);

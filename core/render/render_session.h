@@ -1,11 +1,11 @@
-// RenderSession: owns the thread pool, the current compiled scene and the
+// RenderSession: owns the thread budget, the current compiled scene and the
 // film, and renders progressive passes (one sample per pixel over tiles).
 // A pass can be cancelled between tiles from any thread.
 #pragma once
 
+#include "core/base/parallel.h"
 #include "core/film/film.h"
 #include "core/npr/outlines/line_detector.h"
-#include "core/render/thread_pool.h"
 #include "core/world/render_scene.h"
 
 #include <array>
@@ -37,11 +37,18 @@ class RenderSession {
   // Restricts passes to film pixels in [x0,x1) x [y0,y1) (a render region);
   // an empty rectangle means the whole film. Pixels outside keep their sums.
   void set_region(int x0, int y0, int x1, int y1) { region_ = {x0, y0, x1, y1}; }
+  // Starts the region's accumulation again (stats from zero), keeping the film's
+  // pixels outside it, and restricts passes to it.
+  void restart_region(int x0, int y0, int x1, int y1) {
+    film_->clear_region(x0, y0, x1, y1);
+    stats_ = {};
+    set_region(x0, y0, x1, y1);
+  }
   int divisor() const { return divisor_; }
-  // Generates camera rays from this camera instead of the scene's (an editor
-  // moving the view without recompiling); cleared by set_scene. Only rays are
-  // affected: anything else reading scene().camera still sees the compiled one.
-  void set_camera_override(const Camera& camera) { camera_override_ = camera; }
+  // Swaps in a scene that differs from the current one only in what is read when
+  // the film is resolved (line colours, the painterly filter, render limits: the
+  // resolve and limits stages): the samples accumulated so far stay.
+  void update_scene(std::shared_ptr<const RenderScene> scene) { scene_ = std::move(scene); }
   // Renders one pass; false when cancelled, leaving a partial pass in the film
   // (callers cancel to restart, which clears it).
   bool render_pass();
@@ -51,24 +58,24 @@ class RenderSession {
   const RenderScene& scene() const { return *scene_; }
   const RenderStats& stats() const { return stats_; }
   int threads() const { return pool_.size(); }
-  // For work between passes (resolving the film); never while a pass runs.
-  ThreadPool& pool() { return pool_; }
+  // For work between passes (resolving the film) and for work that should stay
+  // within this session's threads (run() a compile); never while a pass runs.
+  ThreadBudget& pool() { return pool_; }
 
   static constexpr int kTileSize = 16;
 
  private:
   void render_tile(int tile, int worker, uint32_t pass);
 
-  ThreadPool pool_;
+  ThreadBudget pool_;
   std::shared_ptr<const RenderScene> scene_;
   std::unique_ptr<Film> film_;
   LineSetup lines_;  // what the scene's outlines ask of every sample
   RenderStats stats_;
   std::atomic<bool> cancelled_{false};
-  std::vector<uint64_t> worker_rays_;
+  std::vector<uint64_t> worker_rays_;  // one slot per worker: no shared counter on the hot path
   int divisor_ = 1;
-  std::optional<Camera> camera_override_;
-  std::array<int, 4> region_{0, 0, 0, 0};  // one slot per worker: no shared counter on the hot path
+  std::array<int, 4> region_{0, 0, 0, 0};
 };
 
 }  // namespace inkray

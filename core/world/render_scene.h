@@ -1,5 +1,6 @@
-// RenderScene: the immutable, compiled form of a SceneDesc (DESIGN principle 2).
-// Render threads only read it, through a shared_ptr to const.
+// RenderScene: the immutable, compiled form of a SceneDesc (docs/architecture.md,
+// "From JSON to pixels"). Render threads only read it, through a shared_ptr to
+// const; copies share the geometry.
 #pragma once
 
 #include "core/camera/camera.h"

@@ -200,3 +200,35 @@ TEST(GeometryReintersection, GrazingRaysOnLargeSphere) {
 
 }  // namespace
 }  // namespace inkray
+
+namespace inkray {
+namespace {
+
+// A mesh built in object space and placed by an instance transform (how compiled
+// scenes place meshes): Embree intersects in object space, the hit point comes
+// from the world-space vertices, and spawned rays must still neither re-hit the
+// surface nor escape the closed mesh, at scales far from 1.
+TEST(GeometryReintersection, InstancedClosedMeshesUnderRandomTransforms) {
+  Pcg32 rng(7);
+  ReintersectionStats st;
+  const TriangleMesh object = make_uv_sphere(Point3(0.f), 1.f, 16, 32, Transform{});
+  auto shape = std::make_shared<const Shape>(object);
+  const auto bvh = std::make_shared<const ShapeBvh>(shape);
+  for (int i = 0; i < 200; ++i) {
+    const float scale = log_uniform(rng, 1e-3f, 1e4f);
+    const Vec3 stretch(scale * (0.5f + rng.next_float()), scale * (0.5f + rng.next_float()), scale);
+    const Transform to_world = Transform::translate(random_dir(rng) * log_uniform(rng, 1e-3f, 1e2f) * scale) *
+                               Transform::rotate(360.f * rng.next_float(), random_dir(rng)) * Transform::scale(stretch);
+    EmbreeScene scene;
+    scene.add(bvh, to_world, std::make_shared<const Shape>(transformed(object, to_world)));
+    scene.commit();
+    const Point3 center = to_world.point(Point3(0.f));
+    for (int r = 0; r < 20; ++r) check_spawned_rays(scene, ray_towards(rng, center, 10.f * scale * 3.f), true, &st, rng);
+  }
+  EXPECT_GT(st.hits, 3000);
+  EXPECT_EQ(st.rehits, 0);
+  EXPECT_EQ(st.escapes, 0);
+}
+
+}  // namespace
+}  // namespace inkray

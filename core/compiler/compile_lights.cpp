@@ -1,0 +1,96 @@
+// Lights: emissive objects, the document's lights, then the environment.
+#include "core/compiler/compile_lights.h"
+
+#include "core/lights/light_sampling.h"
+
+#include <cmath>
+
+namespace inkray {
+namespace {
+
+Light compile_light(const LightDesc& desc, float scene_radius) {
+  return std::visit(
+      [&](const auto& l) -> Light {
+        using T = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<T, PointLightDesc>) {
+          return PointLight{l.position, l.color * l.intensity};
+        } else if constexpr (std::is_same_v<T, SpotLightDesc>) {
+          const float cos_total = std::cos(glm::radians(l.cone_angle));
+          const float cos_falloff = std::cos(glm::radians(std::min(l.falloff_angle, l.cone_angle)));
+          return SpotLight{l.position, Frame::from_z(glm::normalize(l.target - l.position)), l.color * l.intensity,
+                           cos_total, std::max(cos_falloff, cos_total + 1e-6f)};
+        } else {
+          return DirectionalLight{-glm::normalize(l.direction), l.color * l.intensity, scene_radius};
+        }
+      },
+      desc.data);
+}
+
+// Emissive shapes become area lights when they can be sampled exactly.
+std::optional<Light> area_light_for(const RenderScene& scene, uint32_t object) {
+  const Shape& shape = scene.geometry.shape(object);
+  if (const auto* mesh = std::get_if<TriangleMesh>(&shape)) {
+    std::vector<float> areas(mesh->triangle_count());
+    double total = 0.0;
+    for (size_t t = 0; t < areas.size(); ++t) total += areas[t] = mesh->triangle_area(t);
+    if (total <= 0.0) return std::nullopt;
+    return MeshAreaLight{object, DiscreteDistribution(areas), float(total)};
+  }
+  Point3 center;
+  float radius = 0.f;
+  // A sheared or unevenly scaled sphere has no simple solid-angle sampler; its
+  // emission is still found by BSDF sampling, with full weight.
+  if (!std::get<Sphere>(shape).is_round(&center, &radius)) return std::nullopt;
+  return SphereAreaLight{object, center, radius};
+}
+
+EnvironmentLight compile_environment(const EnvironmentDesc& env, float scene_radius) {
+  EnvironmentLight e;
+  e.scene_radius = scene_radius;
+  if (const auto* c = std::get_if<ConstantEnvironmentDesc>(&env)) {
+    e.zenith = e.horizon = e.nadir = c->color;
+  } else {
+    const auto& g = std::get<GradientEnvironmentDesc>(env);
+    e.zenith = g.zenith;
+    e.horizon = g.horizon;
+    e.nadir = g.nadir;
+  }
+  return e;
+}
+
+}  // namespace
+
+void compile_lights(const SceneDesc& desc, RenderScene& scene) {
+  scene.lights.clear();
+  scene.environment_light = -1;
+  for (RenderObject& o : scene.objects) o.light = -1;
+  // Emissive objects, the lights list, then the environment when it is not black.
+  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    if (!material_is_emissive(scene.material_of(o))) continue;
+    if (auto light = area_light_for(scene, o)) {
+      scene.objects[o].light = int(scene.lights.size());
+      scene.lights.push_back(*light);
+    }
+  }
+  for (const LightDesc& l : desc.lights) scene.lights.push_back(compile_light(l, scene.scene_radius));
+  scene.environment = compile_environment(desc.environment, scene.scene_radius);
+  if (max_component(scene.environment.zenith + scene.environment.horizon + scene.environment.nadir) > 0.f) {
+    scene.environment_light = int(scene.lights.size());
+    scene.lights.push_back(scene.environment);
+  }
+  // Half by power, half uniformly: power alone all but ignores a small spot
+  // next to a sun whose power counts the whole scene's area, though the spot
+  // may light what the camera sees. The uniform half bounds any light's
+  // variance by at most twice what power selection gives.
+  std::vector<float> power;
+  double total = 0.0;
+  for (const Light& l : scene.lights) {
+    power.push_back(std::max(light_power(scene, l), 0.f));
+    total += power.back();
+  }
+  if (total > 0.0)
+    for (float& p : power) p = float(0.5 * p / total + 0.5 / double(power.size()));
+  scene.light_selection = DiscreteDistribution(power);
+}
+
+}  // namespace inkray

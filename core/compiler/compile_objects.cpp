@@ -1,0 +1,114 @@
+#include "core/compiler/compile_objects.h"
+
+#include "core/compiler/compile.h"
+#include "core/document/param_key.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace inkray {
+namespace {
+
+void shape_bounds(const Shape& shape, Point3* lo, Point3* hi) {
+  if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere->bounds(lo, hi);
+  const TriangleMesh& mesh = std::get<TriangleMesh>(shape);
+  *lo = Point3(std::numeric_limits<float>::infinity());
+  *hi = -*lo;
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    *lo = glm::min(*lo, mesh.positions[v]);
+    *hi = glm::max(*hi, mesh.positions[v]);
+  }
+}
+
+// Empty when the shape lies within kMaxWorldCoordinate, else why not.
+std::string world_extent_problem(const Shape& shape) {
+  Point3 lo, hi;
+  shape_bounds(shape, &lo, &hi);
+  const float reach = std::max(max_component(glm::abs(lo)), max_component(glm::abs(hi)));
+  if (std::isfinite(reach) && reach <= kMaxWorldCoordinate) return {};
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "after its transform the shape reaches %g units from the origin; the limit is %g "
+                "(scale it down or move it closer)",
+                double(reach), double(kMaxWorldCoordinate));
+  return text;
+}
+
+// The mesh of a mesh-like shape in object space; null with *error for an unreadable file.
+std::shared_ptr<const Shape> object_space_mesh(const ShapeVariant& shape, ObjectBuild& build, std::string* error) {
+  return std::visit(
+      [&](const auto& s) -> std::shared_ptr<const Shape> {
+        using T = std::decay_t<decltype(s)>;
+        const Transform identity;
+        if constexpr (std::is_same_v<T, QuadDesc>) {
+          return std::make_shared<const Shape>(make_quad(s.corner, s.edge_u, s.edge_v, identity));
+        } else if constexpr (std::is_same_v<T, BoxDesc>) {
+          return std::make_shared<const Shape>(make_box(glm::min(s.min, s.max), glm::max(s.min, s.max), identity));
+        } else if constexpr (std::is_same_v<T, MeshDesc>) {
+          const auto data = build.assets.mesh(build.base_dir / s.path, error);
+          if (!data) return nullptr;
+          return std::make_shared<const Shape>(make_mesh(data->positions, data->normals, data->uvs, data->indices, identity));
+        } else {
+          static_assert(std::is_same_v<T, SphereDesc>, "a new shape type needs a case here");
+          return nullptr;  // spheres are placed analytically
+        }
+      },
+      shape);
+}
+
+}  // namespace
+
+Transform transform_from_desc(const TransformDesc& desc) {
+  Transform t = Transform::scale(desc.scale);
+  for (const RotationDesc& r : desc.rotate) t = Transform::rotate(r.degrees, r.axis) * t;
+  return Transform::translate(desc.translate) * t;
+}
+
+std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build, std::string* key,
+                                                std::string* error) {
+  // A mesh is known by its file's stamp, so a file changed on disk is read again.
+  std::string shape_key;
+  if (const auto* mesh = std::get_if<MeshDesc>(&object.shape)) {
+    const auto stamp = file_stamp(build.base_dir / mesh->path);
+    shape_key = "mesh|" + (stamp ? *stamp : (build.base_dir / mesh->path).string());
+  } else {
+    shape_key = "shape|" + param_key(object.shape);
+  }
+  *key = "placed|" + shape_key + "|" + param_key(object.transform);
+  if (auto found = build.assets.find<PlacedShape>(*key)) return found;
+
+  const Transform to_world = transform_from_desc(object.transform);
+  auto placed = std::make_shared<PlacedShape>();
+  if (const auto* sphere = std::get_if<SphereDesc>(&object.shape)) {
+    // Spheres are intersected analytically under their transform, in a one-primitive
+    // BVH: rebuilding it costs no more than moving an instance.
+    auto shape = std::make_shared<const Shape>(Sphere{sphere->center, sphere->radius, to_world});
+    placed->bvh = std::make_shared<const ShapeBvh>(shape);
+    placed->world = std::move(shape);
+    ++build.counters.shape_bvhs;
+  } else {
+    const std::string bvh_key = "bvh|" + shape_key;
+    placed->bvh = build.assets.find<ShapeBvh>(bvh_key);
+    if (!placed->bvh) {
+      auto shape = object_space_mesh(object.shape, build, error);
+      if (!shape) return nullptr;
+      placed->bvh = build.assets.keep(bvh_key, std::make_shared<const ShapeBvh>(std::move(shape)));
+      ++build.counters.shape_bvhs;
+    }
+    placed->to_world = to_world;
+    if (to_world.is_identity()) {
+      placed->world = placed->bvh->shared_shape();
+    } else {
+      placed->world = std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(placed->bvh->shape()), to_world));
+      ++build.counters.placements;
+    }
+  }
+  placed->problem = world_extent_problem(*placed->world);
+  // A sphere's BVH is its own; a mesh's is kept while a placement of it is.
+  std::vector<std::string> from;
+  if (!std::holds_alternative<SphereDesc>(object.shape)) from.push_back("bvh|" + shape_key);
+  return build.assets.keep<PlacedShape>(*key, std::move(placed), std::move(from));
+}
+
+}  // namespace inkray
