@@ -1,7 +1,9 @@
 // inkray: the editor. GLFW window, OpenGL 3.3 core, Dear ImGui; everything
 // else is EditorApp (ui/). Headless runs for tests and measurements:
 //   inkray --screenshot OUT.png --frames N [SCENE.json]
-//   inkray --measure-edits N [SCENE.json]   (edit latency and frame times)
+//   inkray --measure-edits N [--edit KIND,...] [SCENE.json]   (edit latency, frame
+//   times and samples kept, per kind of edit)
+#include "app/edit_measurement.h"
 #include "core/image/image_io.h"
 #include "ui/camera_controller.h"
 #include "ui/editor_app.h"
@@ -13,11 +15,16 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -27,6 +34,7 @@ struct Options {
   std::string screenshot;
   int frames = 0;  // 0: run until closed
   int measure_edits = 0;
+  std::vector<inkray::measure::EditKind> edit_kinds;  // empty: camera
   int threads = 0;
   int width = 1600, height = 900;
   std::string select;  // object to select at start, so screenshots show the highlight
@@ -38,7 +46,14 @@ void usage() {
       "  --screenshot FILE    after --frames frames (and the first full-resolution image),\n"
       "                       write the window to FILE (PNG) and exit\n"
       "  --frames N           frames to run before the screenshot or exit\n"
-      "  --measure-edits N    make N camera edits and print edit-to-pixels latency and frame times\n"
+      "  --measure-edits N    make N edits of each --edit kind, one every 15 frames, and print per\n"
+      "                       kind: edit to first pixels p50/p95, UI frame work p95, and the samples\n"
+      "                       kept (spp of the first image showing an edit / spp shown before it)\n"
+      "  --edit KIND[,KIND]   kinds to measure (repeatable; default camera): camera (orbit step),\n"
+      "                       material (colour of the first object's material), light (intensity of\n"
+      "                       the first light, else an emissive strength), transform (move the first\n"
+      "                       object), line-colour (outlines.silhouette.color), stroke-parameter\n"
+      "                       (hue_jitter of the first stroke emitter), exposure (the viewport's)\n"
       "  --threads N          viewport render threads (default: all cores but one)\n"
       "  --size WxH           window size (default 1600x900)\n"
       "  --select NAME        select the object NAME at start (for screenshots and tests)");
@@ -58,6 +73,20 @@ bool parse(int argc, char** argv, Options* o) {
       o->frames = std::atoi(v);
     } else if (a == "--measure-edits" && (v = value())) {
       o->measure_edits = std::atoi(v);
+    } else if (a == "--edit" && (v = value())) {
+      const std::string list = v;
+      for (size_t begin = 0; begin <= list.size();) {
+        const size_t end = std::min(list.find(',', begin), list.size());
+        const std::string name = list.substr(begin, end - begin);
+        const auto found = std::find(inkray::measure::kEditKindNames.begin(), inkray::measure::kEditKindNames.end(), name);
+        if (found == inkray::measure::kEditKindNames.end()) {
+          std::fprintf(stderr, "inkray: --edit: unknown kind \"%s\" (valid kinds: %s)\n", name.c_str(),
+                       inkray::measure::edit_kind_list().c_str());
+          std::exit(2);
+        }
+        o->edit_kinds.push_back(inkray::measure::EditKind(found - inkray::measure::kEditKindNames.begin()));
+        begin = end + 1;
+      }
     } else if (a == "--threads" && (v = value())) {
       o->threads = std::atoi(v);
     } else if (a == "--select" && (v = value())) {
@@ -92,17 +121,6 @@ bool write_screenshot(const std::string& file, int width, int height) {
     return false;
   }
   return true;
-}
-
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))];
-}
-
-void print_stats(const char* what, const std::vector<double>& v) {
-  std::printf("%s: n=%zu p50=%.2f ms p95=%.2f ms max=%.2f ms\n", what, v.size(), percentile(v, 0.5),
-              percentile(v, 0.95), v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()));
 }
 
 }  // namespace
@@ -164,12 +182,28 @@ int main(int argc, char** argv) {
       }
     }
 
+    std::unique_ptr<inkray::measure::EditMeasurement> measurement;
+    bool kind_skipped = false;  // a kind this scene cannot take: measure the rest, then fail
+    if (opt.measure_edits > 0 && exit_code == 0) {
+      std::vector<inkray::measure::EditKind> kinds;
+      for (inkray::measure::EditKind kind :
+           opt.edit_kinds.empty() ? std::vector<inkray::measure::EditKind>{inkray::measure::EditKind::camera} : opt.edit_kinds) {
+        if (const std::string why = inkray::measure::unavailable(kind, app.state().document.scene()); !why.empty()) {
+          std::fprintf(stderr, "inkray: --edit %s: %s\n", std::string(inkray::measure::kEditKindNames[size_t(kind)]).c_str(),
+                       why.c_str());
+          kind_skipped = true;
+        } else {
+          kinds.push_back(kind);
+        }
+      }
+      if (kinds.empty()) exit_code = 1;
+      measurement = std::make_unique<inkray::measure::EditMeasurement>(std::move(kinds), opt.measure_edits);
+    }
+
     using clock = std::chrono::steady_clock;
     const auto start = clock::now();
-    std::vector<double> frame_ms;
-    int frame = 0, edits_made = 0, frames_since_edit = 0;
-    bool measuring = false;
-    // A failed --select leaves exit_code set and skips the loop.
+    int frame = 0;
+    // A failed --select or --edit leaves exit_code set and skips the loop.
     for (; exit_code == 0; ++frame) {
       const auto frame_start = clock::now();
       glfwPollEvents();
@@ -189,7 +223,6 @@ int main(int argc, char** argv) {
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       const double work_ms = std::chrono::duration<double, std::milli>(clock::now() - frame_start).count();
-      if (measuring) frame_ms.push_back(work_ms);
       glfwSetWindowTitle(window, app.window_title().c_str());
 
       const double seconds = std::chrono::duration<double>(clock::now() - start).count();
@@ -202,29 +235,18 @@ int main(int argc, char** argv) {
         exit_code = write_screenshot(opt.screenshot, w, h) ? 0 : 1;
         break;
       }
-      if (opt.measure_edits > 0 && app.viewport().shown_full_resolution()) {
-        measuring = true;
-        // An orbit step through the document, as a drag would make, every 15 frames.
-        if (++frames_since_edit >= 15) {
-          frames_since_edit = 0;
-          if (edits_made == opt.measure_edits) {
-            print_stats("edit-to-first-pixels", app.edit_latencies_ms());
-            print_stats("  of which renderer (compile+preview)", app.render_latencies_ms());
-            print_stats("ui frame (work)", frame_ms);
-            break;
-          }
-          inkray::SceneDesc scene = app.state().document.scene();
-          scene.camera = inkray::orbit(scene.camera, 0.02f, 0.f);
-          app.state().edit(std::move(scene), "Orbit");
-          ++edits_made;
-        }
+      if (measurement && !measurement->step(app, work_ms)) {
+        if (measurement->failed() || kind_skipped) exit_code = 1;
+        break;
       }
       if (opt.screenshot.empty() && opt.measure_edits == 0 && opt.frames > 0 && frame >= opt.frames) break;
       glfwSwapBuffers(window);
       if (app.should_quit()) break;
-      // Without a vsync (Xvfb) the loop would spin; hold it near 60 Hz.
-      const auto frame_end = frame_start + std::chrono::microseconds(16600);
-      if (clock::now() < frame_end) std::this_thread::sleep_until(frame_end);
+      // Without a vsync (Xvfb) the loop would spin: hold it near 60 Hz, but draw a new
+      // image as soon as the renderer has one (at most every 4 ms), so an edit's
+      // pixels do not wait for the next tick.
+      std::this_thread::sleep_until(frame_start + std::chrono::milliseconds(4));
+      app.wait_for_image(frame_start + std::chrono::microseconds(16600));
     }
   }
   ImGui_ImplOpenGL3_Shutdown();

@@ -371,7 +371,10 @@ void EditorApp::dialogs() {
 void EditorApp::sync_renderer() {
   state_.selection = validated(state_.document.scene(), state_.selection);
   state_.view.highlight_object = state_.selection.kind == ItemKind::object ? state_.selection.index : -1;
-  if (first_sync_ || !operator_equal(state_.view, sent_view_)) renderer_.set_view(sent_view_ = state_.view);
+  if (first_sync_ || !operator_equal(state_.view, sent_view_)) {
+    renderer_.set_view(sent_view_ = state_.view);
+    view_sent_time_ = std::chrono::steady_clock::now();
+  }
   ViewportLimits limits = state_.limits;
   if (limits.spp <= 0) limits.spp = state_.document.scene().render.spp;
   if (limits.time_seconds <= 0.0) limits.time_seconds = state_.document.scene().render.time_limit;
@@ -386,7 +389,8 @@ void EditorApp::sync_renderer() {
   }
   if (state_.document.revision() != submitted_doc_revision_) {
     submitted_doc_revision_ = state_.document.revision();
-    submit_times_[renderer_.submit(state_.document.scene())] = std::chrono::steady_clock::now();
+    submitted_render_revision_ = renderer_.submit(state_.document.scene());
+    submit_times_[submitted_render_revision_] = std::chrono::steady_clock::now();
   }
   first_sync_ = false;
 }

@@ -37,6 +37,10 @@ class EditorApp {
   // The window's close button: quits at once, or asks first when there are unsaved changes.
   void request_quit();
   bool should_quit() const { return quit_; }
+  // Returns when the renderer has an image the viewport has not shown, or at `until`.
+  void wait_for_image(std::chrono::steady_clock::time_point until) const {
+    renderer_.wait_for_generation(viewport_->uploaded_generation(), until);
+  }
 
   EditorState& state() { return state_; }
   const ViewportPanel& viewport() const { return *viewport_; }
@@ -46,6 +50,10 @@ class EditorApp {
   const std::vector<double>& edit_latencies_ms() const { return latencies_ms_; }
   // The renderer's part of it: submit to the snapshot's publication (compile + preview pass + resolve).
   const std::vector<double>& render_latencies_ms() const { return render_latencies_ms_; }
+  // For inkray --measure-edits: the renderer revision of the newest submit, and when the
+  // view (exposure, display) was last sent.
+  uint64_t submitted_revision() const { return submitted_render_revision_; }
+  std::chrono::steady_clock::time_point view_sent_time() const { return view_sent_time_; }
 
  private:
   enum class Pending { none, new_document, open_dialog, open_file, quit };
@@ -86,6 +94,8 @@ class EditorApp {
 
   // What the renderer has been told, to send only changes.
   uint64_t submitted_doc_revision_ = 0;
+  uint64_t submitted_render_revision_ = 0;
+  std::chrono::steady_clock::time_point view_sent_time_;
   ViewportView sent_view_;
   ViewportLimits sent_limits_;
   RegionRect sent_region_;

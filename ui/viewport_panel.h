@@ -27,6 +27,10 @@ class ViewportPanel {
   // Whether a snapshot at full resolution has been shown (screenshots wait for it).
   bool shown_full_resolution() const { return shown_divisor_ == 1; }
   uint32_t shown_spp() const { return shown_spp_; }
+  // For inkray --measure-edits: the image on screen (null before the first) and its revision.
+  const std::shared_ptr<const ViewportSnapshot>& shown_snapshot() const { return snapshot_; }
+  uint64_t shown_revision() const { return shown_revision_; }
+  uint64_t uploaded_generation() const { return uploaded_generation_; }
 
  private:
   void upload(const ViewportSnapshot& snapshot);

@@ -23,13 +23,13 @@ namespace fs = std::filesystem;
 // Film buffers and the resolved image: 56 measured without AOVs; every AOV and
 // line coverage (the editor's viewport can show them all) add about 100.
 constexpr std::uint64_t kFilmBytesPerPixel = 160;
-// A shape, its Embree geometry and its records (a sphere; boxes and quads are meshes
-// of 12 and 2 triangles).
-constexpr std::uint64_t kBytesPerObject = 1536;  // 1331 measured
+// A shape, its own Embree scene and the instance placing it, its records and cache
+// entries (a sphere; boxes and quads are meshes of 12 and 2 triangles).
+constexpr std::uint64_t kBytesPerObject = 6144;  // 5924 measured
 // A loaded OBJ mesh and its BVH per byte of OBJ text.
-constexpr std::uint64_t kBytesPerMeshFileByte = 7;  // 6.6 measured
+constexpr std::uint64_t kBytesPerMeshFileByte = 7;  // 6.72 measured
 // A ribbon vertex: attributes, its share of indices, the kept copy and the BVH.
-constexpr std::uint64_t kBytesPerStrokeVertex = 200;  // 190 measured
+constexpr std::uint64_t kBytesPerStrokeVertex = 200;  // 162 measured
 // Linear float RGB and the 8-bit decode it is made from: 14.9 measured.
 constexpr std::uint64_t kBytesPerTexel = 16;
 // A brush image decoded as RGBA and baked into two 8-bit variants (by construction).

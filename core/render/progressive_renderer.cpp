@@ -65,6 +65,9 @@ void ProgressiveRenderer::set_view(const ViewportView& view) {
     view_ = view;
     reencode_ = true;
   }
+  // The pass in flight stops and resumes after the new encoding is published (its
+  // finished tiles are kept), so an exposure drag shows at once, not a pass later.
+  session_.cancel();
   wake_.notify_all();
 }
 
@@ -103,6 +106,11 @@ bool ProgressiveRenderer::paused() const {
 uint64_t ProgressiveRenderer::generation() const {
   std::lock_guard lock(mutex_);
   return generation_;
+}
+
+bool ProgressiveRenderer::wait_for_generation(uint64_t after, std::chrono::steady_clock::time_point deadline) const {
+  std::unique_lock lock(mutex_);
+  return published_.wait_until(lock, deadline, [&] { return generation_ > after; });
 }
 
 std::shared_ptr<const ViewportSnapshot> ProgressiveRenderer::latest() const {
@@ -177,6 +185,7 @@ void ProgressiveRenderer::run() {
                               int(std::ceil(region.x1 * w)), int(std::ceil(region.y1 * h)));
       curve_.clear();
       ++accumulation_;
+      resolved_current_ = false;
       active_ = true;
     } else if (restart) {
       aovs_ = aovs_for(view);
@@ -185,6 +194,7 @@ void ProgressiveRenderer::run() {
       const int divisor = region.empty() ? kFirstPreviewDivisor : 1;
       session_.set_scene(scene, aovs_, divisor);
       ++accumulation_;
+      resolved_current_ = false;
       const int w = session_.film().width(), h = session_.film().height();
       if (region.empty()) {
         session_.set_region(0, 0, 0, 0);
@@ -195,6 +205,7 @@ void ProgressiveRenderer::run() {
       active_ = true;
     } else if (keep_film) {
       session_.update_scene(scene);
+      resolved_current_ = false;
       active_ = true;
       if (session_.stats().passes > 0) publish_snapshot(scene, view, limits, false);
     } else if (reencode) {
@@ -208,6 +219,7 @@ void ProgressiveRenderer::run() {
       publish_snapshot(scene, view, limits, true);
       continue;
     }
+    resolved_current_ = false;  // the pass adds samples, finished or not
     if (!session_.render_pass()) continue;  // cancelled: a newer request is waiting
     const RenderStats& stats = session_.stats();
     if (divisor == 1) curve_.push_back({stats.elapsed_seconds, stats.relative_error});
@@ -216,6 +228,7 @@ void ProgressiveRenderer::run() {
     if (divisor > 1) {
       session_.set_scene(scene, aovs_, divisor / 2);
       ++accumulation_;
+      resolved_current_ = false;
     } else if (done) {
       active_ = false;
     }
@@ -242,10 +255,13 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
     // exposure slider still applies to make small errors visible.
     snap->rgba = encode_display(film.resolve_noise(), DisplayEncoding{view.encoding.exposure, ViewTransform::raw});
   } else {
-    const Cancel cancel(&superseded_);
-    RgbImage image = resolve_final(film, *scene, &session_.pool(), cancel);
-    if (image.pixels.empty()) return;  // cut short: the newer document is waiting
-    snap->rgba = encode_display(image, view.encoding);
+    if (!resolved_current_) {
+      const Cancel cancel(&superseded_);
+      resolved_ = resolve_final(film, *scene, &session_.pool(), cancel);
+      if (resolved_.pixels.empty()) return;  // cut short: the newer document is waiting
+      resolved_current_ = true;
+    }
+    snap->rgba = encode_display(resolved_, view.encoding);
   }
   if (view.highlight_object >= 0 && film.aovs().has(Aov::object_id)) {
     // Previews are magnified, so their 1-pixel line is already thick on screen.
@@ -259,12 +275,15 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
   snap->error_curve = curve_;
   snap->finished = finished;
   snap->accumulation = accumulation_;
-  std::lock_guard lock(mutex_);
-  snap->revision = revision_;
-  snap->submit_to_publish_ms = ms_since(revision_time_);
-  first_publish_ = false;
-  latest_ = std::move(snap);
-  ++generation_;
+  {
+    std::lock_guard lock(mutex_);
+    snap->revision = revision_;
+    snap->submit_to_publish_ms = ms_since(revision_time_);
+    first_publish_ = false;
+    latest_ = std::move(snap);
+    ++generation_;
+  }
+  published_.notify_all();
 }
 
 }  // namespace inkray

@@ -83,6 +83,9 @@ class ProgressiveRenderer {
   bool paused() const;
 
   uint64_t generation() const;  // increments with every published snapshot
+  // Waits until the generation passes `after` or the deadline comes; true for a
+  // new snapshot. Lets a UI without vsync draw an image as soon as it exists.
+  bool wait_for_generation(uint64_t after, std::chrono::steady_clock::time_point deadline) const;
   std::shared_ptr<const ViewportSnapshot> latest() const;
   // The newest compiled scene (for picking on the UI thread; it is immutable).
   std::shared_ptr<const RenderScene> scene() const;
@@ -103,6 +106,7 @@ class ProgressiveRenderer {
   std::atomic<bool> superseded_{false};
   mutable std::mutex mutex_;
   std::condition_variable wake_;
+  mutable std::condition_variable published_;
   std::thread worker_;
 
   // Written by the UI under mutex_, read by the worker at its next step.
@@ -125,6 +129,10 @@ class ProgressiveRenderer {
   std::chrono::steady_clock::time_point revision_time_;
   bool first_publish_ = true, active_ = false;
   uint64_t accumulation_ = 0;
+  // The film's last final resolve, while no sample or resolve setting changed since:
+  // a new exposure or view transform re-encodes it without resolving again.
+  RgbImage resolved_;
+  bool resolved_current_ = false;
   AovSet aovs_;
   std::vector<ErrorSample> curve_;
 };

@@ -32,6 +32,7 @@ void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet a
   lines_ = make_line_setup(*scene_);
   film_ = std::make_unique<Film>(width, height, aovs, lines_.active);
   stats_ = {};
+  tiles_done_.clear();
 }
 
 bool RenderSession::render_pass() {
@@ -40,12 +41,18 @@ bool RenderSession::render_pass() {
   const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
   const int tiles_y = (film_->height() + kTileSize - 1) / kTileSize;
   const uint32_t pass = stats_.passes;
+  // A pass cancelled before resumes where it stopped: its finished tiles already
+  // hold this pass's sample, and a second would repeat it.
+  if (tiles_done_.size() != size_t(tiles_x * tiles_y)) tiles_done_.assign(size_t(tiles_x * tiles_y), 0);
   std::fill(worker_rays_.begin(), worker_rays_.end(), 0);
   pool_.parallel_for(tiles_x * tiles_y, [&](int tile, int worker) {
-    if (!cancelled_.load(std::memory_order_relaxed)) render_tile(tile, worker, pass);
+    if (tiles_done_[size_t(tile)] || cancelled_.load(std::memory_order_relaxed)) return;
+    render_tile(tile, worker, pass);
+    tiles_done_[size_t(tile)] = 1;
   });
   stats_.elapsed_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled_.load(std::memory_order_relaxed)) return false;
+  std::fill(tiles_done_.begin(), tiles_done_.end(), 0);
   ++stats_.passes;
   ++stats_.spp;
   for (uint64_t r : worker_rays_) stats_.rays += r;

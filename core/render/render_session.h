@@ -42,6 +42,7 @@ class RenderSession {
   void restart_region(int x0, int y0, int x1, int y1) {
     film_->clear_region(x0, y0, x1, y1);
     stats_ = {};
+    tiles_done_.clear();
     set_region(x0, y0, x1, y1);
   }
   int divisor() const { return divisor_; }
@@ -50,7 +51,7 @@ class RenderSession {
   // resolve and limits stages): the samples accumulated so far stay.
   void update_scene(std::shared_ptr<const RenderScene> scene) { scene_ = std::move(scene); }
   // Renders one pass; false when cancelled, leaving a partial pass in the film
-  // (callers cancel to restart, which clears it).
+  // that the next call completes (its finished tiles are not rendered again).
   bool render_pass();
   void cancel() { cancelled_.store(true, std::memory_order_relaxed); }
 
@@ -74,6 +75,7 @@ class RenderSession {
   RenderStats stats_;
   std::atomic<bool> cancelled_{false};
   std::vector<uint64_t> worker_rays_;  // one slot per worker: no shared counter on the hot path
+  std::vector<uint8_t> tiles_done_;  // tiles of the pass in progress already in the film
   int divisor_ = 1;
   std::array<int, 4> region_{0, 0, 0, 0};
 };
