@@ -1,7 +1,7 @@
 // Lights: emissive objects, the document's lights, then the environment.
 #include "core/compiler/compile_lights.h"
 
-#include "core/lights/light_sampling.h"
+#include "core/integrator/light_sampling.h"
 
 #include <cmath>
 

@@ -5,7 +5,7 @@
 
 #include "core/base/overloaded.h"
 #include "core/integrator/toon_shading.h"
-#include "core/lights/light_sampling.h"
+#include "core/integrator/light_sampling.h"
 #include "core/math/frame.h"
 #include "core/sampling/warp.h"
 

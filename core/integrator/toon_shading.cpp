@@ -25,7 +25,7 @@
 // unshadowed (a sampled sky adds noise to every band edge it lifts).
 #include "core/integrator/toon_shading.h"
 
-#include "core/lights/light_sampling.h"
+#include "core/integrator/light_sampling.h"
 
 #include <cmath>
 #include <vector>

@@ -2,7 +2,7 @@
 // delivers, its pdf, that light_pdf agrees with sample_light for the same
 // direction, and that the area lights' pdfs integrate to 1. Then the light
 // selection distribution compile_scene builds.
-#include "core/lights/light_sampling.h"
+#include "core/integrator/light_sampling.h"
 
 #include "core/compiler/compile.h"
 #include "core/math/hash.h"

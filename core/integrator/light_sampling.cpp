@@ -1,4 +1,4 @@
-#include "core/lights/light_sampling.h"
+#include "core/integrator/light_sampling.h"
 
 #include "core/math/float_error.h"
 #include "core/sampling/warp.h"
