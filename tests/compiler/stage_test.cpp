@@ -175,6 +175,33 @@ void expect_only_stage_work(Stage stage, const CompileCounters& d, const std::st
   }
 }
 
+// Sections whose parameters differ in stage name each one's: a parameter added there
+// without a stage would silently take the section's default.
+struct ExplicitStages {
+  std::vector<std::string> missing;
+  std::string prefix;
+  template <class T>
+  void operator()(const Param& p, T& field) {
+    if constexpr (ParamGroup<T>) {
+      const std::string outer = std::exchange(prefix, prefix + std::string(p.name) + ".");
+      visit_params(field, *this);
+      prefix = outer;
+    } else if (p.stage == Stage::inherit) {
+      missing.push_back(prefix + std::string(p.name));
+    }
+  }
+};
+
+TEST(StageSections, MixedSectionsNameEveryParametersStage) {
+  SceneDesc d;
+  ExplicitStages render{{}, "render."};
+  visit_params(d.render, render);
+  ExplicitStages outlines{{}, "outlines."};
+  visit_params(d.outlines, outlines);
+  EXPECT_TRUE(render.missing.empty()) << render.missing.front();
+  EXPECT_TRUE(outlines.missing.empty()) << outlines.missing.front();
+}
+
 class StageTable : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(StageTable, EveryParameterRunsItsStageOnly) {
