@@ -119,15 +119,17 @@ CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions
 
   auto scene = std::make_shared<RenderScene>();
   set_view(desc, *scene);
+  std::vector<std::vector<std::string>> material_keys = material_keys_;
   if (!last_ || result.changes.has(Stage::material)) {
-    std::vector<std::string> keys;
-    assets_.record_keys(&keys);
-    compile_materials(desc, *scene, result.errors, assets_);
-    assets_.record_keys(nullptr);
-    material_keys_ = std::move(keys);
+    // Only the materials whose description changed are compiled again.
+    std::vector<Material> last_table;
+    if (last_) last_table.assign(last_->materials.begin(), last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
+    LastMaterials previous;
+    if (last_desc_) previous = {&last_desc_->materials, &last_table, &material_keys_};
+    counters_.materials += compile_materials(desc, *scene, result.errors, assets_, material_keys, previous);
     ++counters_.material_tables;
   } else {
-    assets_.touch(material_keys_);  // the images the reused table holds stay cached
+    for (const auto& keys : material_keys_) assets_.touch(keys);  // the images the reused table holds stay cached
     scene->materials.assign(last_->materials.begin(), last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
     scene->material_names.assign(last_->material_names.begin(),
                                  last_->material_names.begin() + std::ptrdiff_t(last_document_materials_));
@@ -186,6 +188,7 @@ CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions
   ++counters_.light_tables;
 
   assets_.finish_compile();
+  material_keys_ = std::move(material_keys);
   remember(std::move(scene), document_materials);
   return result;
 }

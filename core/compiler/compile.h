@@ -55,7 +55,7 @@ class SceneCompiler {
   std::optional<SceneDesc> last_desc_;  // the document last_ was compiled from
   std::shared_ptr<const RenderScene> last_;
   size_t last_document_materials_ = 0;  // last_->materials before the stroke materials
-  std::vector<std::string> material_keys_;
+  std::vector<std::vector<std::string>> material_keys_;  // per material: the cache entries it was built from
   std::map<std::string, std::string> file_stamps_;  // asset file -> stamp, at the last compile  // the cache entries the material table was built from
 };
 

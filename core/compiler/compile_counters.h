@@ -9,7 +9,8 @@ namespace inkray {
 struct CompileCounters {
   uint64_t compiles = 0;         // compile() calls that returned a scene
   uint64_t checks = 0;           // document checks and memory estimates
-  uint64_t material_tables = 0;  // the material table was compiled
+  uint64_t material_tables = 0;  // the material table was made again
+  uint64_t materials = 0;        // materials compiled (the others were kept from the last table)
   uint64_t light_tables = 0;     // lights and the light selection were rebuilt
   uint64_t top_levels = 0;       // top-level BVHs committed
   uint64_t shape_bvhs = 0;       // bottom-level BVHs built (one shape each)

@@ -167,8 +167,9 @@ void resolve_mixes(const std::vector<MaterialDesc>& list, std::vector<std::optio
 
 }  // namespace
 
-void compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
-                       AssetCache& assets) {
+size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
+                         AssetCache& assets, std::vector<std::vector<std::string>>& keys,
+                         const LastMaterials& last) {
   const std::vector<MaterialDesc>& list = desc.materials;
   ImageCache images(desc.base_dir, assets);
   std::vector<std::optional<Material>> compiled(list.size());
@@ -176,11 +177,28 @@ void compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<st
     errors.push_back("materials[" + std::to_string(i) + "] \"" + list[i].name + "\": " + error);
     compiled[i].reset();
   };
+  // Mixes refer to materials by name, and the table by index: an entry can be kept
+  // while every name stays where it was.
+  bool same_names = last.desc && last.table && last.keys && last.desc->size() == list.size() &&
+                    last.table->size() == list.size() && last.keys->size() == list.size();
+  for (size_t i = 0; same_names && i < list.size(); ++i) same_names = (*last.desc)[i].name == list[i].name;
+  size_t built = 0;
+  std::vector<std::vector<std::string>> used(list.size());
   for (size_t i = 0; i < list.size(); ++i) {
+    if (same_names && (*last.desc)[i] == list[i]) {
+      compiled[i] = (*last.table)[i];
+      used[i] = (*last.keys)[i];
+      assets.touch(used[i]);
+      continue;
+    }
     std::string error;
+    assets.record_keys(&used[i]);
     compiled[i] = compile_material(list[i], images, &error);
+    assets.record_keys(nullptr);
+    ++built;
     if (!compiled[i]) fail(i, error);
   }
+  keys = std::move(used);
   resolve_mixes(list, compiled, fail);
 
   // Document order, failed materials left out; mixes' document indices remapped.
@@ -197,6 +215,7 @@ void compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<st
       mix->b = remap[mix->b];
     }
   }
+  return built;
 }
 
 }  // namespace inkray

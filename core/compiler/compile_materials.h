@@ -10,10 +10,22 @@
 
 namespace inkray {
 
+// The table the last successful compile made from `desc` (every material compiled,
+// in document order): entries whose description is unchanged are taken from it.
+struct LastMaterials {
+  const std::vector<MaterialDesc>* desc = nullptr;
+  const std::vector<Material>* table = nullptr;
+  const std::vector<std::vector<std::string>>* keys = nullptr;  // the cache entries each was built from
+};
+
 // Fills scene.materials and scene.material_names in document order; a material
 // that fails is left out and its error (naming materials[i]) appended. Images
-// come through `assets`.
-void compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
-                       AssetCache& assets);
+// come through `assets`. With `last` given and the list of names unchanged, only
+// the materials whose description changed are compiled; returns how many were.
+// `keys` receives, per material, the cache entries it was built from (kept entries
+// are touched, so the cache keeps their images).
+size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
+                         AssetCache& assets, std::vector<std::vector<std::string>>& keys,
+                         const LastMaterials& last = {});
 
 }  // namespace inkray

@@ -129,6 +129,7 @@ CompileCounters since(const CompileCounters& after, const CompileCounters& befor
   d.compiles = after.compiles - before.compiles;
   d.checks = after.checks - before.checks;
   d.material_tables = after.material_tables - before.material_tables;
+  d.materials = after.materials - before.materials;
   d.light_tables = after.light_tables - before.light_tables;
   d.top_levels = after.top_levels - before.top_levels;
   d.shape_bvhs = after.shape_bvhs - before.shape_bvhs;
@@ -153,6 +154,7 @@ void expect_only_stage_work(Stage stage, const CompileCounters& d, const std::st
     return;
   }
   EXPECT_EQ(d.material_tables, stage == Stage::material ? 1u : 0u);
+  EXPECT_EQ(d.materials, stage == Stage::material ? 1u : 0u) << "a material edit compiles that material only";
   EXPECT_EQ(d.light_tables, 1u);
   if (stage == Stage::material || stage == Stage::light) {
     EXPECT_EQ(d.shape_bvhs, 0u);
