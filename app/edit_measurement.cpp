@@ -52,6 +52,33 @@ void nudge(ColorInput& input, int step) {
 }
 
 // The colour a material's swatch in the properties panel would show.
+void nudge(MaterialVariant& material, int step);
+
+// A node edit: the first colour constant of the graph, as an artist dragging it.
+void nudge_graph(GraphDesc& graph, int step) {
+  for (GraphNodeDesc& node : graph.nodes) {
+    if (auto* rgb = std::get_if<RgbNode>(&node.data)) {
+      rgb->color = nudged(rgb->color, step);
+      return;
+    }
+  }
+  for (GraphNodeDesc& node : graph.nodes) {
+    const bool done = std::visit(
+        [&](auto& d) {
+          using T = std::decay_t<decltype(d)>;
+          if constexpr (std::is_constructible_v<MaterialVariant, T> && !std::is_same_v<T, GraphDesc>) {
+            MaterialVariant m = d;
+            nudge(m, step);
+            d = std::get<T>(m);
+            return true;
+          }
+          return false;
+        },
+        node.data);
+    if (done) return;
+  }
+}
+
 void nudge(MaterialVariant& material, int step) {
   std::visit(
       [&](auto& d) {
@@ -63,6 +90,8 @@ void nudge(MaterialVariant& material, int step) {
           d.tint = nudged(d.tint, step);
         } else if constexpr (std::is_same_v<T, MixDesc>) {
           nudge(d.factor, step);
+        } else if constexpr (std::is_same_v<T, GraphDesc>) {
+          nudge_graph(d, step);
         } else {
           nudge(d.color, step);
         }

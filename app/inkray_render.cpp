@@ -1,4 +1,5 @@
 // inkray-render: the headless renderer for final renders and render farms.
+#include "core/document/graph_reference.h"
 #include "app/render_cli.h"
 #include "core/film/resolve.h"
 #include "core/render/batch_render.h"
@@ -157,6 +158,10 @@ int main(int argc, char** argv) {
   }
   if (options->help) {
     std::fputs(inkray::kRenderCliHelp, stdout);
+    return 0;
+  }
+  if (options->node_reference) {
+    std::fputs(inkray::node_reference_markdown().c_str(), stdout);
     return 0;
   }
   try {

@@ -35,6 +35,8 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
                         parameter, asset paths relative to FILE's folder) and exit without
                         rendering; upgrades and normalises scene files
   -q, --quiet           no progress bar
+  --node-reference      print the reference of material-graph nodes (Markdown), generated from
+                        their parameter lists, and exit
   -h, --help            this text
 
 The same scene, seed and sample count give the same image at any thread count.
@@ -106,6 +108,9 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
     const std::string_view arg = argv[i];
     if (arg == "-h" || arg == "--help") {
       o.help = true;
+      return o;
+    } else if (arg == "--node-reference") {
+      o.node_reference = true;
       return o;
     } else if (arg == "-q" || arg == "--quiet") {
       o.quiet = true;

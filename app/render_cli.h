@@ -24,6 +24,7 @@ struct RenderCliOptions {
   std::vector<AovOutput> aovs;
   bool quiet = false;
   bool help = false;
+  bool node_reference = false;  // print the material-graph node reference (Markdown) and exit
 };
 
 // Returns nullopt and sets *error to one line on bad arguments, including output paths

@@ -148,6 +148,14 @@ void ParamWidgets::end_group() {
   ImGui::TreePop();
 }
 
+void ParamWidgets::push_item(int index) {
+  ImGui::PushID(index);
+  ImGui::Separator();
+}
+void ParamWidgets::pop_item() { ImGui::PopID(); }
+bool ParamWidgets::remove_button() { return ImGui::SmallButton("remove"); }
+bool ParamWidgets::add_button() { return ImGui::SmallButton("+ add"); }
+
 bool variant_type_combo_impl(const char* label, const std::vector<std::string_view>& names, int* index) {
   bool edited = false;
   const std::string preview = *index >= 0 && *index < int(names.size()) ? std::string(names[size_t(*index)]) : "?";

@@ -29,6 +29,29 @@ struct ParamWidgets {
     int index = int(v);
     if (choice_widget(p, &index)) v = E(index), note(p);
   }
+  // A graph's nodes are drawn by the node editor (node_editor_panel.h), not as a list.
+  void operator()(const Param&, std::vector<GraphNodeDesc>&) {}
+  // A list of structs (ramp stops, links): each entry's widgets, a remove button, an add button.
+  template <ParamGroup T>
+  void operator()(const Param& p, std::vector<T>& items) {
+    if (!begin_group(p)) return;
+    for (size_t i = 0; i < items.size(); ++i) {
+      push_item(int(i));
+      visit_params(items[i], *this);
+      if (remove_button()) {
+        items.erase(items.begin() + long(i));
+        note(p);
+        pop_item();
+        break;
+      }
+      pop_item();
+    }
+    if (add_button()) {
+      items.push_back(items.empty() ? T{} : items.back());
+      note(p);
+    }
+    end_group();
+  }
   template <ParamGroup T>
   void operator()(const Param& p, T& group) {
     if (begin_group(p)) {
@@ -41,6 +64,10 @@ struct ParamWidgets {
   bool choice_widget(const Param& p, int* index);
   bool begin_group(const Param& p);
   void end_group();
+  void push_item(int index);
+  void pop_item();
+  bool remove_button();
+  bool add_button();
   void note(const Param& p) {
     changed = true;
     changed_param = p.name;

@@ -109,7 +109,8 @@ CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions
     ++counters_.compiles;
     counters_.files_read = assets_.files_read();
   };
-  if (last_ && result.changes.within({Stage::limits, Stage::resolve, Stage::camera, Stage::sampling, Stage::film})) {
+  if (last_ && result.changes.within(
+                   {Stage::layout, Stage::limits, Stage::resolve, Stage::camera, Stage::sampling, Stage::film})) {
     // Nothing of the world changed: a new view of the same one.
     auto scene = std::make_shared<RenderScene>(*last_);
     set_view(desc, *scene);
@@ -126,7 +127,8 @@ CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions
     if (last_) last_table.assign(last_->materials.begin(), last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
     LastMaterials previous;
     if (last_desc_) previous = {&last_desc_->materials, &last_table, &material_keys_};
-    counters_.materials += compile_materials(desc, *scene, result.errors, assets_, material_keys, previous);
+    counters_.materials += compile_materials(desc, *scene, result.errors, assets_, material_keys, previous,
+                                             options.stand_in_for_broken_graphs ? &result.warnings : nullptr);
     ++counters_.material_tables;
   } else {
     for (const auto& keys : material_keys_) assets_.touch(keys);  // the images the reused table holds stay cached

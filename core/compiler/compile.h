@@ -23,11 +23,15 @@ namespace inkray {
 struct CompileOptions {
   Cancel cancel;                  // checked between objects and inside stroke building
   std::uint64_t memory_limit = 0;  // bytes the estimate may reach; 0: half the machine's memory
+  // Draw a material graph that does not compile in a loud stand-in colour and report
+  // it in `warnings`, rather than failing the compile (the editor: the scene stays usable).
+  bool stand_in_for_broken_graphs = false;
 };
 
 struct CompileResult {
   std::shared_ptr<const RenderScene> scene;  // null when there were errors or it was cancelled
   std::vector<std::string> errors;
+  std::vector<std::string> warnings;  // broken graphs drawn as stand-ins; the scene renders
   bool cancelled = false;  // stopped by options.cancel; errors then says so
   // What separates this document from the last one compiled; every stage for a first compile.
   StageSet changes;

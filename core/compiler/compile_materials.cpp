@@ -3,6 +3,7 @@
 // is an error rather than a loop.
 #include "core/compiler/compile_materials.h"
 
+#include "core/compiler/compile_graph.h"
 
 #include <array>
 #include <deque>
@@ -58,7 +59,7 @@ std::optional<Material> compile_toon(const ToonDesc& d, ImageCache& images, std:
   m.bands = d.bands;
   m.threshold = d.threshold;
   m.softness = d.softness;
-  m.ramp = d.ramp;
+  if (!d.ramp.empty()) m.ramp = std::make_shared<const std::vector<Color>>(d.ramp);
   if (!d.ramp_image.empty()) {
     // A ramp holds colours, so 8-bit files are sRGB like colour textures.
     m.ramp_image = images.get(ImageTextureDesc{d.ramp_image, Color(1.f), true}, error);
@@ -81,7 +82,8 @@ std::optional<Material> compile_toon(const ToonDesc& d, ImageCache& images, std:
 }
 
 // Everything but the indices of a mix; those are known once all materials are.
-std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& images, std::string* error) {
+std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& images, AssetCache& assets,
+                                         const std::filesystem::path& base_dir, std::string* error) {
   auto tex = [&](const ColorInput& c) { return compile_color(c, images, error); };
   return std::visit(
       [&](const auto& m) -> std::optional<Material> {
@@ -104,7 +106,17 @@ std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& i
           return TransparentMaterial{m.tint};
         } else if constexpr (std::is_same_v<T, ToonDesc>) {
           return compile_toon(m, images, error);
+        } else if constexpr (std::is_same_v<T, GraphDesc>) {
+          std::vector<std::string> errors;
+          auto program = compile_graph(m, base_dir, assets, errors);
+          if (!program) {
+            *error = errors.empty() ? "the graph did not compile" : errors.front();
+            for (size_t k = 1; k < errors.size(); ++k) *error += "\n" + errors[k];  // one message each
+            return std::nullopt;
+          }
+          return GraphMaterial{std::move(program)};
         } else {
+          static_assert(std::is_same_v<T, MixDesc>);
           auto t = tex(m.factor);
           return t ? std::optional<Material>(MixMaterial{0, 0, *t}) : std::nullopt;
         }
@@ -155,6 +167,12 @@ void resolve_mixes(const std::vector<MaterialDesc>& list, std::vector<std::optio
       auto& mix = std::get<MixMaterial>(*compiled[i]);
       mix.a = uint32_t(a);
       mix.b = uint32_t(b);
+      const auto side_uses_light = [&](size_t s) {
+        if (const auto* g = std::get_if<GraphMaterial>(&*compiled[s])) return g->program->uses_light;
+        if (const auto* m = std::get_if<MixMaterial>(&*compiled[s])) return m->uses_light;
+        return false;
+      };
+      mix.uses_light = side_uses_light(a) || side_uses_light(b);
     }
     for (size_t u : users[i])
       if (--pending[u] == 0) ready.push_back(u);
@@ -165,17 +183,60 @@ void resolve_mixes(const std::vector<MaterialDesc>& list, std::vector<std::optio
   }
 }
 
+// Sets every colour input to a constant: what a closure template is compiled from.
+struct ClearTextures {
+  template <class F>
+  void operator()(const Param&, F& field) {
+    if constexpr (std::is_same_v<F, ColorInput>) field = Color(0.f);
+  }
+};
+
+// What a graph that does not compile looks like in the editor: loud, and unlit so
+// no light hides it.
+Material broken_graph_stand_in() {
+  return UnlitMaterial{CheckerTexture{Color(1.f, 0.f, 1.f), Color(0.05f, 0.f, 0.05f), 40.f}};
+}
+
 }  // namespace
+
+std::optional<Material> compile_closure_template(const MaterialVariant& data, const std::filesystem::path& base_dir,
+                                                 AssetCache& assets, std::string* error) {
+  ImageCache images(base_dir, assets);
+  MaterialDesc desc;
+  desc.data = data;
+  // Colour inputs are the graph's registers: the template keeps only the settings.
+  std::visit(
+      [](auto& m) {
+        if constexpr (ParamGroup<std::decay_t<decltype(m)>>) {
+          ClearTextures clear;
+          visit_params(m, clear);
+        }
+      },
+      desc.data);
+  return compile_material(desc, images, assets, base_dir, error);
+}
 
 size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
                          AssetCache& assets, std::vector<std::vector<std::string>>& keys,
-                         const LastMaterials& last) {
+                         const LastMaterials& last, std::vector<std::string>* broken_graphs) {
   const std::vector<MaterialDesc>& list = desc.materials;
   ImageCache images(desc.base_dir, assets);
   std::vector<std::optional<Material>> compiled(list.size());
   auto fail = [&](size_t i, const std::string& error) {
-    errors.push_back("materials[" + std::to_string(i) + "] \"" + list[i].name + "\": " + error);
-    compiled[i].reset();
+    const bool stand_in = broken_graphs && std::holds_alternative<GraphDesc>(list[i].data);
+    size_t start = 0;
+    while (start <= error.size()) {
+      const size_t end = std::min(error.find('\n', start), error.size());
+      const std::string line = "materials[" + std::to_string(i) + "] \"" + list[i].name + "\": " +
+                               error.substr(start, end - start);
+      (stand_in ? *broken_graphs : errors).push_back(line);
+      start = end + 1;
+    }
+    if (stand_in) {
+      compiled[i] = broken_graph_stand_in();
+    } else {
+      compiled[i].reset();
+    }
   };
   // Mixes refer to materials by name, and the table by index: an entry can be kept
   // while every name stays where it was.
@@ -193,7 +254,7 @@ size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<
     }
     std::string error;
     assets.record_keys(&used[i]);
-    compiled[i] = compile_material(list[i], images, &error);
+    compiled[i] = compile_material(list[i], images, assets, desc.base_dir, &error);
     assets.record_keys(nullptr);
     ++built;
     if (!compiled[i]) fail(i, error);

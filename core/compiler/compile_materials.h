@@ -23,9 +23,11 @@ struct LastMaterials {
 // come through `assets`. With `last` given and the list of names unchanged, only
 // the materials whose description changed are compiled; returns how many were.
 // `keys` receives, per material, the cache entries it was built from (kept entries
-// are touched, so the cache keeps their images).
+// are touched, so the cache keeps their images). With `broken_graphs` given, a graph
+// that does not compile is drawn in a loud stand-in colour and its errors go there
+// instead of `errors`, so the rest of the scene still renders (the editor's choice).
 size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
                          AssetCache& assets, std::vector<std::vector<std::string>>& keys,
-                         const LastMaterials& last = {});
+                         const LastMaterials& last = {}, std::vector<std::string>* broken_graphs = nullptr);
 
 }  // namespace inkray

@@ -22,6 +22,8 @@ struct Rebaser {
       if (p.kind == ParamKind::path) field = rebase(field);
     } else if constexpr (std::is_same_v<T, ColorInput>) {
       visit_tagged(field);
+    } else if constexpr (std::is_same_v<T, std::vector<GraphNodeDesc>>) {
+      for (GraphNodeDesc& node : field) visit_tagged(node.data);
     }
   }
 

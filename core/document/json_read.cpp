@@ -225,6 +225,10 @@ bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string&
 
 template <ParamGroup T>
 bool read_value(ErrorLog& log, const Param&, const Json& j, const std::string& at, T& out);
+template <ParamGroup T>
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, std::vector<T>& out);
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at,
+                std::vector<GraphNodeDesc>& out);
 
 // ---------------------------------------------------------------- structs and variants
 // The visitor handed to visit_params: reads the key a Param names, if present, and
@@ -263,6 +267,19 @@ bool read_value(ErrorLog& log, const Param&, const Json& j, const std::string& a
   KeyList allowed;
   read_params(log, j, out, at, allowed);
   check_keys(log, j, at, allowed);
+  return true;
+}
+
+// A list of structs (ParamKind::list): an array of objects, each read with the struct's list.
+template <ParamGroup T>
+bool read_value(ErrorLog& log, const Param&, const Json& j, const std::string& at, std::vector<T>& out) {
+  if (!j.is_array()) {
+    log.add(at, "expected an array of objects, got " + describe(j));
+    return false;
+  }
+  std::vector<T> items(j.size());
+  for (std::size_t i = 0; i < j.size(); ++i) read_value(log, Param{}, j[i], element_path(at, i), items[i]);
+  out = std::move(items);
   return true;
 }
 
@@ -335,6 +352,27 @@ bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string&
   log.add(at, "expected a number or an array of 3 numbers (or a texture object with \"type\": " +
                   type_name_list<ColorInput>() + "), got " + describe(j));
   return false;
+}
+
+// A graph's nodes: objects with an "id", a "type" and that node type's parameters.
+// Ids are checked against each other by the graph's validation (material_graph_checks).
+bool read_value(ErrorLog& log, const Param&, const Json& j, const std::string& at,
+                std::vector<GraphNodeDesc>& out) {
+  if (!j.is_array()) {
+    log.add(at, "expected an array of node objects ({\"id\": ..., \"type\": ..., ...}), got " + describe(j));
+    return false;
+  }
+  constexpr Param kNodeId = required(text("id", "Node id, unique within the graph"));
+  std::vector<GraphNodeDesc> nodes(j.size());
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string node_at = element_path(at, i);
+    if (!expect_object(log, j[i], node_at, "a node object ({\"id\": ..., \"type\": ..., ...})")) continue;
+    KeyList allowed;
+    ParamReader{log, j[i], node_at, allowed}(kNodeId, nodes[i].id);
+    if (read_tagged(log, j[i], nodes[i].data, node_at, "node", allowed)) check_keys(log, j[i], node_at, allowed);
+  }
+  out = std::move(nodes);
+  return true;
 }
 
 template <class Desc>

@@ -53,6 +53,32 @@ Json value_json(const Param&, const std::vector<Color>& colors) {
 
 template <class Desc>
 void write_params(Json& object, Desc desc);
+template <class Variant>
+void write_tagged(Json& object, const Variant& value);
+
+// A list of structs: an array of objects.
+template <ParamGroup T>
+Json value_json(const Param&, const std::vector<T>& items) {
+  Json list = Json::array();
+  for (const T& item : items) {
+    Json object = Json::object();
+    write_params(object, item);
+    list.push_back(std::move(object));
+  }
+  return list;
+}
+
+// A graph's nodes: the id first, then the type and its parameters.
+Json value_json(const Param&, const std::vector<GraphNodeDesc>& nodes) {
+  Json list = Json::array();
+  for (const GraphNodeDesc& node : nodes) {
+    Json object = Json::object();
+    object["id"] = node.id;
+    write_tagged(object, node.data);
+    list.push_back(std::move(object));
+  }
+  return list;
+}
 
 // A nested struct (ParamKind::group) is written as an object of its own parameters.
 template <ParamGroup T>

@@ -55,6 +55,11 @@ void append_key(std::string& key, const T& value) {
   }
 }
 
+inline void append_key(std::string& key, const GraphNodeDesc& node) {
+  append_key(key, node.id);
+  append_key(key, node.data);
+}
+
 inline void append_key(std::string& key, const TransformDesc& t) {
   append_key(key, t.scale);
   append_key(key, t.translate);

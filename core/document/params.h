@@ -25,6 +25,8 @@ enum class ParamKind {
   choice,     // an enum with a name table
   color_list, // std::vector<Color>, e.g. a colour ramp
   group,      // a nested struct with its own visit_params (a JSON object)
+  list,       // std::vector of a struct with its own visit_params (a JSON array of objects)
+  nodes,      // a material graph's nodes (graph_desc.h): a JSON array of tagged objects with ids
 };
 
 // Every position, offset and edge vector stays within this distance of the origin.
@@ -37,6 +39,7 @@ inline constexpr double kMaxCoordinate = 1e9;
 // of the document it belongs to (docs/architecture.md, "Stages").
 enum class Stage : unsigned char {
   inherit,   // the section's: materials[i] material, objects[i] object, lights and environment light, ...
+  layout,    // where the editor draws things (a graph's node positions): nothing is redone
   limits,    // render limits (samples, time): rendering goes on
   resolve,   // re-composite the accumulated film: line colours and opacity, painterly filter
   camera,    // camera rays: accumulation restarts, nothing is rebuilt
@@ -50,7 +53,7 @@ enum class Stage : unsigned char {
 };
 inline constexpr int kStageCount = int(Stage::strokes) + 1;
 inline constexpr std::array<std::string_view, kStageCount> kStageNames = {
-    "inherit", "limits", "resolve", "camera", "sampling", "film", "material", "light", "object", "geometry", "strokes"};
+    "inherit", "layout", "limits", "resolve", "camera", "sampling", "film", "material", "light", "object", "geometry", "strokes"};
 
 struct Param {
   std::string_view name;
@@ -93,6 +96,7 @@ constexpr Param color_list(std::string_view name, std::string_view doc) {
   return {name, doc, ParamKind::color_list, 0.0, 1e6};
 }
 constexpr Param group(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::group}; }
+constexpr Param list(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::list}; }
 constexpr Param required(Param p) {
   p.required = true;
   return p;

@@ -34,6 +34,9 @@ struct AssetCollector {
       if (p.kind == ParamKind::path) out.push_back({child_path(at, p.name), field, kind, p.required});
     } else if constexpr (std::is_same_v<T, ColorInput>) {
       collect_tagged(child_path(at, p.name), field, out);
+    } else if constexpr (std::is_same_v<T, std::vector<GraphNodeDesc>>) {
+      for (std::size_t i = 0; i < field.size(); ++i)
+        collect_tagged(element_path(child_path(at, p.name), i), field[i].data, out);
     }
   }
 

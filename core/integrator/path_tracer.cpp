@@ -5,6 +5,7 @@
 
 #include "core/base/overloaded.h"
 #include "core/integrator/toon_shading.h"
+#include "core/integrator/light_inputs.h"
 #include "core/integrator/light_sampling.h"
 #include "core/math/frame.h"
 #include "core/sampling/warp.h"
@@ -184,12 +185,24 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
     const uint32_t pairs = kCameraPairs + kPairsPerBounce * uint32_t(depth);
     const bool skip_lights = std::exchange(st.skip_lights, false);
 
-    uint32_t material_index = scene.objects[si.object].material;
-    if (material_flags(scene.materials[material_index]).is_mix) {
-      material_index = resolve_mix(scene.materials, material_index, si, sampler.get_pair(pairs + 3).x);
-      if (material_index == kNoMaterial) break;
+    // Mixes and graphs decide per sample which surface this is (material.h).
+    const uint32_t material_index = scene.objects[si.object].material;
+    const Material* chosen = &scene.materials[material_index];
+    Material scratch;
+    if (material_flags(*chosen).resolves) {
+      ShadingPoint sp = shading_point(si, wo);
+      sp.depth = st.path_length;
+      sp.object_id = scene.objects[si.object].source;
+      sp.material_id = material_index;
+      if (material_uses_light(scene.materials, material_index))
+        gather_light_inputs(scene, LightReference{si.p, si.p_error, sp.ng}, sp, &result.rays);
+      const ResolvedMaterial r =
+          resolve_material(scene.materials, material_index, sp, sampler.get_pair(pairs + 3).x, scratch);
+      if (!r.material) break;
+      chosen = r.material;
+      st.beta *= r.weight;
     }
-    const Material& material = scene.materials[material_index];
+    const Material& material = *chosen;
     if (depth == 0 && first_hit) record_first_hit(scene, camera, si, material, first_hit);
 
     // Opaque surfaces are two-sided: face them towards the viewer. Surfaces
@@ -225,8 +238,9 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
                 return shade_toon(scene, sampler, b, m, material, st, result);
               return by_bsdf();
             },
-            // resolve_mix above never returns a mix.
+            // resolve_material above never returns a mix or a graph.
             [](const MixMaterial&) { return false; },
+            [](const GraphMaterial&) { return false; },
         },
         material);
     if (!go_on) break;

@@ -4,6 +4,7 @@
 #include "core/materials/material.h"
 
 #include "core/base/overloaded.h"
+#include "core/materials/shader_eval.h"
 
 #include <algorithm>
 
@@ -24,19 +25,26 @@ const EmissiveMaterial* emitter_of(const Material& material) {
                         [](const ToonMaterial&) -> Emitter { return nullptr; },
                         // Even over an emitter: resolve it first.
                         [](const MixMaterial&) -> Emitter { return nullptr; },
+                        [](const GraphMaterial&) -> Emitter { return nullptr; },
                     },
                     material);
 }
 
 }  // namespace
 
-uint32_t resolve_mix(std::span<const Material> materials, uint32_t index, const SurfaceInteraction& si,
-                     float u) {
+ResolvedMaterial resolve_material(std::span<const Material> materials, uint32_t index, const ShadingPoint& sp,
+                                  float u, Material& scratch) {
   // Acyclic mixes reach a non-mix in fewer steps than there are materials.
   for (size_t steps = 0; steps <= materials.size() && index < materials.size(); ++steps) {
-    if (!material_flags(materials[index]).is_mix) return index;
-    const MixMaterial& mix = std::get<MixMaterial>(materials[index]);
-    float p = glm::clamp(luminance(texture_eval(mix.factor, si.uv)), 0.f, 1.f);
+    const Material& m = materials[index];
+    if (const auto* graph = std::get_if<GraphMaterial>(&m)) {
+      ShaderRegisters registers;
+      run_shader(*graph->program, sp, registers);
+      return pick_closure(*graph->program, registers, u, scratch);
+    }
+    if (!material_flags(m).resolves) return {&m, 1.f};
+    const MixMaterial& mix = std::get<MixMaterial>(m);
+    float p = glm::clamp(luminance(texture_eval(mix.factor, sp.si->uv)), 0.f, 1.f);
     if (p > 1.f - 1e-6f) p = 1.f;  // white's luminance rounds just below 1; factor 1 must be all b
     if (u < p) {
       index = mix.b;
@@ -46,7 +54,34 @@ uint32_t resolve_mix(std::span<const Material> materials, uint32_t index, const 
       u = std::min((u - p) / (1.f - p), kOneMinusEpsilon);
     }
   }
-  return kNoMaterial;
+  return {};
+}
+
+bool material_uses_light(std::span<const Material> materials, uint32_t index) {
+  if (index >= materials.size()) return false;
+  if (const auto* graph = std::get_if<GraphMaterial>(&materials[index])) return graph->program->uses_light;
+  if (const auto* mix = std::get_if<MixMaterial>(&materials[index])) return mix->uses_light;
+  return false;
+}
+
+SurfaceOverrides material_overrides(std::span<const Material> materials, uint32_t index, const ShadingPoint& sp,
+                                    float u) {
+  for (size_t steps = 0; steps <= materials.size() && index < materials.size(); ++steps) {
+    const Material& m = materials[index];
+    if (const auto* graph = std::get_if<GraphMaterial>(&m)) return shader_overrides(*graph->program, sp);
+    const auto* mix = std::get_if<MixMaterial>(&m);
+    if (!mix) return {};
+    float p = glm::clamp(luminance(texture_eval(mix->factor, sp.si->uv)), 0.f, 1.f);
+    if (p > 1.f - 1e-6f) p = 1.f;
+    if (u < p) {
+      index = mix->b;
+      u = std::min(u / p, kOneMinusEpsilon);
+    } else {
+      index = mix->a;
+      u = std::min((u - p) / (1.f - p), kOneMinusEpsilon);
+    }
+  }
+  return {};
 }
 
 std::optional<Bsdf> material_bsdf(const Material& material, const SurfaceInteraction& si) {
@@ -68,8 +103,9 @@ std::optional<Bsdf> material_bsdf(const Material& material, const SurfaceInterac
                         [&](const ToonMaterial& m) -> Result {
                           return LambertBsdf{si.color * texture_eval(m.color, si.uv)};
                         },
-                        // A mix scatters as the side resolve_mix picks.
+                        // A mix or graph scatters as the surface resolve_material picks.
                         [](const MixMaterial&) -> Result { return std::nullopt; },
+                        [](const GraphMaterial&) -> Result { return std::nullopt; },
                     },
                     material);
 }
@@ -102,6 +138,7 @@ Color material_albedo(const Material& material, const SurfaceInteraction& si) {
           [](const TransparentMaterial& m) -> Color { return m.tint; },
           [&](const ToonMaterial& m) -> Color { return si.color * texture_eval(m.color, uv); },
           [](const MixMaterial&) -> Color { return Color(0.f); },  // resolved before this is asked
+          [](const GraphMaterial&) -> Color { return Color(0.f); },
       },
       material);
 }

@@ -5,13 +5,17 @@
 
 #include "core/geometry/ray.h"
 #include "core/materials/bsdf.h"
+#include "core/materials/shader_program.h"
+#include "core/materials/shading_point.h"
 #include "core/materials/texture.h"
 #include "core/materials/toon.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <variant>
+#include <vector>
 
 namespace inkray {
 
@@ -41,55 +45,74 @@ struct TransparentMaterial {
 struct MixMaterial {
   uint32_t a = 0, b = 0;  // indices into RenderScene::materials; never a cycle
   Texture factor;
+  bool uses_light = false;  // a side is a graph that reads the light inputs
+};
+
+// A material graph: its program decides per shading point which surface the
+// sample sees (shader_program.h).
+struct GraphMaterial {
+  std::shared_ptr<const ShaderProgram> program;
 };
 
 using Material = std::variant<DiffuseMaterial, ConductorMaterial, DielectricMaterial, EmissiveMaterial,
-                              UnlitMaterial, TransparentMaterial, ToonMaterial, MixMaterial>;
+                              UnlitMaterial, TransparentMaterial, ToonMaterial, MixMaterial, GraphMaterial>;
+
+// One way a graph's surface can be at a hit (shader_program.h): the template
+// compiled from the closure node's settings, and the registers holding its valued
+// inputs in parameter-list order.
+struct ClosureLeaf {
+  Material tmpl;
+  std::vector<uint16_t> inputs;
+};
 
 // What a kind of material promises, decided once per alternative.
 struct MaterialFlags {
   bool scatters;   // material_bsdf gives a BSDF
   bool emits;      // material_emission can be non-zero
   bool transmits;  // light passes through: the surface's orientation tells inside from outside
-  bool is_mix;     // stands for other materials: resolve_mix before asking anything else
+  bool resolves;   // stands for other surfaces per sample: resolve_material before asking anything else
 };
 // No general definition: a new alternative does not compile until it states its flags here.
 template <class T>
 struct MaterialTraits;
 template <>
 struct MaterialTraits<DiffuseMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .is_mix = false};
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .resolves = false};
 };
 template <>
 struct MaterialTraits<ConductorMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .is_mix = false};
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .resolves = false};
 };
 template <>
 struct MaterialTraits<DielectricMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = true, .is_mix = false};
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = true, .resolves = false};
 };
 template <>
 struct MaterialTraits<EmissiveMaterial> {
-  static constexpr MaterialFlags flags{.scatters = false, .emits = true, .transmits = false, .is_mix = false};
+  static constexpr MaterialFlags flags{.scatters = false, .emits = true, .transmits = false, .resolves = false};
 };
 // Shows its colour to every ray, lit by nothing: it neither scatters nor lights the scene.
 template <>
 struct MaterialTraits<UnlitMaterial> {
   static constexpr MaterialFlags flags{
-      .scatters = false, .emits = false, .transmits = false, .is_mix = false};
+      .scatters = false, .emits = false, .transmits = false, .resolves = false};
 };
 template <>
 struct MaterialTraits<TransparentMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = true, .is_mix = false};
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = true, .resolves = false};
 };
 // Scatters as a Lambertian of its lit colour where the path does not show its cel look.
 template <>
 struct MaterialTraits<ToonMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .is_mix = false};
+  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .resolves = false};
 };
 template <>
 struct MaterialTraits<MixMaterial> {
-  static constexpr MaterialFlags flags{.scatters = false, .emits = false, .transmits = false, .is_mix = true};
+  static constexpr MaterialFlags flags{.scatters = false, .emits = false, .transmits = false, .resolves = true};
+};
+template <>
+struct MaterialTraits<GraphMaterial> {
+  static constexpr MaterialFlags flags{.scatters = false, .emits = false, .transmits = false, .resolves = true};
 };
 
 // The flags of the kind `m` holds.
@@ -98,13 +121,33 @@ inline MaterialFlags material_flags(const Material& m) {
 }
 
 inline constexpr uint32_t kNoMaterial = UINT32_MAX;
-// Follows mixes from `index` to a material that is not a mix, choosing b with
-// probability luminance(factor) clamped to [0, 1]. u in [0, 1) is reused for
-// nested mixes by rescaling, so one stratified number decides the whole chain.
-// Returns kNoMaterial if the chain is longer than the material list (a cycle,
-// which compilation rejects).
-uint32_t resolve_mix(std::span<const Material> materials, uint32_t index, const SurfaceInteraction& si,
-                     float u);
+
+// The surface a sample sees at a hit: never a mix or a graph. `material` points
+// into the table or at the caller's scratch; the sample's throughput is multiplied
+// by `weight` (2 where an add closure picked one of its two sides).
+struct ResolvedMaterial {
+  const Material* material = nullptr;  // null: none (a cycle, which compilation rejects)
+  float weight = 1.f;
+};
+// Follows mixes and runs graphs from `index`. A mix picks b with probability
+// luminance(factor) clamped to [0, 1]; u in [0, 1) is reused for nested choices by
+// rescaling, so one stratified number decides the whole chain. A graph's chosen
+// closure is written to `scratch`. sp carries the hit and, when a graph needs
+// them (material_uses_light), the light inputs.
+ResolvedMaterial resolve_material(std::span<const Material> materials, uint32_t index, const ShadingPoint& sp,
+                                  float u, Material& scratch);
+// Whether resolving `index` may run a graph that reads the light inputs.
+bool material_uses_light(std::span<const Material> materials, uint32_t index);
+
+// A graph's outline and stroke outputs at a hit (mixes followed with u like resolve_material);
+// each is empty when the graph leaves it unlinked or the material is not a graph.
+struct SurfaceOverrides {
+  std::optional<Color> line_color;
+  std::optional<float> line_width;
+  std::optional<Color> stroke_color;
+};
+SurfaceOverrides material_overrides(std::span<const Material> materials, uint32_t index, const ShadingPoint& sp,
+                                    float u);
 
 // Materials read the hit's uv and vertex colour (si.color multiplies base colours).
 // The functions below see a mix as neither scattering nor emitting: resolve it first.

@@ -20,7 +20,9 @@ struct ToonMaterial {
   int bands = 2;
   float threshold = 0.5f;
   float softness = 0.02f;
-  std::vector<Color> ramp;                     // evenly spaced stops over the light level
+  // Evenly spaced stops over the light level; null or empty for bands. Shared so a
+  // graph copies the material per hit without allocating.
+  std::shared_ptr<const std::vector<Color>> ramp;
   std::shared_ptr<const RgbImage> ramp_image;  // null when unset; replaces ramp and bands
   ToonRampLookup ramp_axis = ToonRampLookup::none;
   float ramp_near = 1.f, ramp_far = 20.f;

@@ -160,6 +160,7 @@ void ProgressiveRenderer::run() {
       // a camera move or a material edit costs no rebuild of the geometry.
       CompileOptions options;
       options.cancel = Cancel(&superseded_);
+      options.stand_in_for_broken_graphs = true;  // one bad graph must not blank the viewport
       CompileResult compiled = session_.pool().run([&] { return compiler_.compile(*desc, options); });
       std::lock_guard lock(mutex_);
       if (compiled.cancelled) continue;  // the newer document is waiting
@@ -167,9 +168,10 @@ void ProgressiveRenderer::run() {
         messages_.insert(messages_.end(), compiled.errors.begin(), compiled.errors.end());
         continue;  // the last good scene stays on screen
       }
+      messages_.insert(messages_.end(), compiled.warnings.begin(), compiled.warnings.end());
       // Line colours, the painterly filter and render limits are read when the film
       // is resolved: the samples so far stay, and the image is composited again.
-      keep_film = scene && !restart && compiled.changes.within({Stage::resolve, Stage::limits});
+      keep_film = scene && !restart && compiled.changes.within({Stage::layout, Stage::resolve, Stage::limits});
       scene = scene_ = compiled.scene;
       revision_ = revision;
       revision_time_ = revision_time;

@@ -35,6 +35,15 @@ struct Nudge {
       const Stage outer = std::exchange(section, s);
       visit_params(field, *this);
       section = outer;
+    } else if constexpr (std::is_same_v<T, std::vector<GraphNodeDesc>>) {
+      // Every parameter of every node of a graph is one more edit to try.
+      const Stage outer = std::exchange(section, s);
+      for (GraphNodeDesc& node : field) std::visit([&](auto& n) { visit_params(n, *this); }, node.data);
+      section = outer;
+    } else if constexpr (requires { field.front(); requires ParamGroup<typename T::value_type>; }) {
+      const Stage outer = std::exchange(section, s);
+      for (auto& item : field) visit_params(item, *this);
+      section = outer;
     } else {
       if (index++ != target) return;
       changed = nudge(p, field);
@@ -251,7 +260,9 @@ TEST_P(StageTable, EveryParameterRunsItsStageOnly) {
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, StageTable,
                          ::testing::Values("cornell_outlines.json", "materials.json", "toon.json", "lights.json",
-                                           "strokes_150.json", "npr_mesh.json", "mesh.json"),
+                                           "strokes_150.json", "npr_mesh.json", "mesh.json", "graph_toon_rim.json",
+                                           "graph_painterly.json", "graph_xtoon_depth.json",
+                                           "graph_outline_gradient.json"),
                          [](const auto& scene) { return scene.param.substr(0, scene.param.find('.')); });
 
 }  // namespace

@@ -83,6 +83,14 @@ struct Example<MixMaterial> {
   static std::optional<Bsdf> bsdf(const SurfaceInteraction&) { return std::nullopt; }
 };
 
+template <>
+struct Example<GraphMaterial> {
+  static Material make() { return GraphMaterial{std::make_shared<const ShaderProgram>()}; }
+  // A graph is run before anything else is asked of it.
+  static Color albedo(const SurfaceInteraction&) { return Color(0.f); }
+  static std::optional<Bsdf> bsdf(const SurfaceInteraction&) { return std::nullopt; }
+};
+
 template <class T>
 concept HasEmission = requires(const SurfaceInteraction& si) {
   Example<T>::emission(si);
@@ -119,10 +127,10 @@ void check_alternative() {
   EXPECT_EQ(got.scatters, flags.scatters);
   EXPECT_EQ(got.emits, flags.emits);
   EXPECT_EQ(got.transmits, flags.transmits);
-  EXPECT_EQ(got.is_mix, flags.is_mix);
+  EXPECT_EQ(got.resolves, flags.resolves);
   EXPECT_EQ(material_has_transmission(material), flags.transmits);
-  // A mix stands for others; what it is made of does the rest.
-  if (flags.is_mix) {
+  // A mix or graph stands for others; what it is made of does the rest.
+  if (flags.resolves) {
     EXPECT_FALSE(flags.scatters || flags.emits || flags.transmits);
   }
   // Light is either sent out or scattered here, never both.
@@ -174,8 +182,8 @@ TEST(MaterialDispatch, EmissionSidesAndStrength) {
   EXPECT_FALSE(material_is_emissive(EmissiveMaterial{ConstantTexture{Color(0.f)}, 5.f, false}));
 }
 
-// resolve_mix reaches a non-mix through nested mixes, by the factor's luminance.
-TEST(MaterialDispatch, ResolveMixReachesAKindThatIsNotAMix) {
+// resolve_material reaches a kind that is not a mix through nested mixes, by the factor's luminance.
+TEST(MaterialDispatch, ResolveReachesAKindThatIsNotAMix) {
   const std::vector<Material> materials = {
       DiffuseMaterial{ConstantTexture{Color(0.5f)}},              // 0
       EmissiveMaterial{ConstantTexture{Color(1.f)}, 1.f, false},  // 1
@@ -184,18 +192,25 @@ TEST(MaterialDispatch, ResolveMixReachesAKindThatIsNotAMix) {
       MixMaterial{2, 0, ConstantTexture{Color(0.f)}},             // 4: always a, the mix 2
   };
   const SurfaceInteraction si;
-  EXPECT_EQ(resolve_mix(materials, 0, si, 0.9f), 0u);
-  EXPECT_EQ(resolve_mix(materials, 2, si, 0.1f), 1u);
-  EXPECT_EQ(resolve_mix(materials, 2, si, 0.3f), 0u);
-  EXPECT_EQ(resolve_mix(materials, 3, si, 0.1f), 0u);
-  EXPECT_EQ(resolve_mix(materials, 4, si, 0.1f), 1u);
-  EXPECT_EQ(resolve_mix(materials, 4, si, 0.9f), 0u);
+  const ShadingPoint sp = shading_point(si, Vec3(0.f, 0.f, 1.f));
+  Material scratch;
+  const auto resolve = [&](const std::vector<Material>& list, uint32_t index, float u) -> uint32_t {
+    const ResolvedMaterial r = resolve_material(list, index, sp, u, scratch);
+    EXPECT_EQ(r.weight, 1.f);
+    return r.material ? uint32_t(r.material - list.data()) : kNoMaterial;
+  };
+  EXPECT_EQ(resolve(materials, 0, 0.9f), 0u);
+  EXPECT_EQ(resolve(materials, 2, 0.1f), 1u);
+  EXPECT_EQ(resolve(materials, 2, 0.3f), 0u);
+  EXPECT_EQ(resolve(materials, 3, 0.1f), 0u);
+  EXPECT_EQ(resolve(materials, 4, 0.1f), 1u);
+  EXPECT_EQ(resolve(materials, 4, 0.9f), 0u);
   for (float u = 0.f; u < 1.f; u += 0.0625f)
-    EXPECT_FALSE(material_flags(materials[resolve_mix(materials, 4, si, u)]).is_mix);
-  // A cycle (which compilation rejects) ends in kNoMaterial rather than looping.
+    EXPECT_FALSE(material_flags(materials[resolve(materials, 4, u)]).resolves);
+  // A cycle (which compilation rejects) ends in no material rather than looping.
   const std::vector<Material> cycle = {MixMaterial{1, 1, ConstantTexture{Color(0.f)}},
                                        MixMaterial{0, 0, ConstantTexture{Color(0.f)}}};
-  EXPECT_EQ(resolve_mix(cycle, 0, si, 0.5f), kNoMaterial);
+  EXPECT_EQ(resolve(cycle, 0, 0.5f), kNoMaterial);
 }
 
 }  // namespace

@@ -80,7 +80,7 @@ TEST(ToonMaterial, RampStopsAreEvenlySpaced) {
   EXPECT_EQ(toon_ramp_eval({Color(0.3f)}, 0.7f), Color(0.3f));
 
   ToonMaterial m = hard_toon(2, 0.5f);
-  m.ramp = stops;
+  m.ramp = std::make_shared<const std::vector<Color>>(stops);
   ToonLightInput in;
   in.level = 0.5f;
   EXPECT_EQ(toon_base_color(m, Color(0.5f), in), Color(0.5f, 0.f, 0.f));
@@ -100,7 +100,7 @@ TEST(ToonMaterial, RampImageIsLightAcrossAndAxisUp) {
 
   ToonMaterial m = hard_toon(2, 0.5f);
   m.ramp_image = image;
-  m.ramp = {Color(0.5f)};  // the image wins
+  m.ramp = std::make_shared<const std::vector<Color>>(std::vector<Color>{Color(0.5f)});  // the image wins
   ToonLightInput in;
   in.level = 1.f;
   in.ramp_v = 1.f;

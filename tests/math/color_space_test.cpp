@@ -1,6 +1,8 @@
 // HSV <-> RGB: known values, round trips, hue wrap and clamping of jitter.
 #include "core/math/color_space.h"
 
+#include "support/color_checks.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -8,11 +10,7 @@
 namespace inkray {
 namespace {
 
-void expect_color_near(const Color& got, const Color& want, float tolerance = 1e-5f) {
-  EXPECT_NEAR(got.x, want.x, tolerance);
-  EXPECT_NEAR(got.y, want.y, tolerance);
-  EXPECT_NEAR(got.z, want.z, tolerance);
-}
+using testing::expect_color_near;
 
 TEST(ColorSpace, KnownValues) {
   struct Case {

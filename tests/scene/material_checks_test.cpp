@@ -158,7 +158,7 @@ TEST(SceneJsonMaterialChecks, ToonAndMixLoadFromJson) {
   const auto& cel = std::get<ToonMaterial>(compiled.scene->materials[1]);
   EXPECT_EQ(cel.bands, 3);
   EXPECT_TRUE(cel.rim);
-  EXPECT_EQ(cel.ramp.size(), 2u);
+  EXPECT_EQ(cel.ramp->size(), 2u);
 }
 
 TEST(SceneJsonStrokeChecks, UnnamedEmittersAreNamedByIndex) {

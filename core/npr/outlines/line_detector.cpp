@@ -57,7 +57,7 @@ float sample_width_px(const RenderScene& scene, const LineSetup& setup, const Ca
   }
   if (o.distance_falloff > 0.f && distance > o.falloff_start && o.falloff_start > 0.f)
     width *= std::pow(o.falloff_start / distance, o.distance_falloff);
-  if (centre.hit) width *= scene.objects[centre.object].lines.width_scale;
+  if (centre.hit) width *= scene.objects[centre.object].lines.width_scale * centre.line_width;
   return width;
 }
 
@@ -132,9 +132,9 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
     // The line belongs to the nearer surface of the two.
     const PerceivedSurface& owner = !s.hit || (centre.hit && centre.distance <= s.distance) ? centre : s;
     const LineOverride& lo = scene.objects[owner.object].lines;
-    if (lo.override_color) {
+    if (lo.override_color || owner.line_color) {
       out.override_weight += strongest;
-      out.override_color += strongest * lo.color;
+      out.override_color += strongest * (lo.override_color ? lo.color : *owner.line_color);
     }
   }
   return out;

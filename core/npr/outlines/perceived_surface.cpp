@@ -30,8 +30,9 @@ std::optional<Vec3> continue_through(const Material& material, const SurfaceInte
                         [](const UnlitMaterial&) -> Next { return std::nullopt; },
                         [&](const TransparentMaterial&) -> Next { return -wo; },
                         [](const ToonMaterial&) -> Next { return std::nullopt; },
-                        // The caller resolves mixes first.
+                        // The caller resolves mixes and graphs first.
                         [](const MixMaterial&) -> Next { return std::nullopt; },
+                        [](const GraphMaterial&) -> Next { return std::nullopt; },
                     },
                     material);
 }
@@ -57,16 +58,24 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
       length = hit.t * glm::length(ray.d);
     }
     const RenderObject& object = scene.objects[si.object];
-    uint32_t material = object.material;
-    if (material_flags(scene.materials[material]).is_mix)
-      material = resolve_mix(scene.materials, material, si, u_mix);
-    if (material == kNoMaterial) return out;
     const Vec3 wo = -glm::normalize(ray.d);
+    const uint32_t index = object.material;
+    const Material* material = &scene.materials[index];
+    Material scratch;
+    ShadingPoint sp = shading_point(si, wo);
+    sp.depth = out.distance + length;
+    sp.object_id = object.source;
+    sp.material_id = index;
+    if (material_flags(*material).resolves) {
+      // Lines do not gather light: a graph reading it sees a fully lit surface.
+      material = resolve_material(scene.materials, index, sp, u_mix, scratch).material;
+      if (!material) return out;
+    }
     out.distance += length;
 
     std::optional<Vec3> next;
     if (follow && !object.lines.stop_lines && chain < kMaxPerceivedChain)
-      next = continue_through(scene.materials[material], si, wo);
+      next = continue_through(*material, si, wo);
     if (!next) {
       out.hit = true;
       out.object = si.object;
@@ -76,6 +85,11 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
       const bool flip = glm::dot(wo, si.ng) < 0.f;
       out.ng = flip ? -si.ng : si.ng;
       out.ns = flip ? -si.ns : si.ns;
+      if (std::holds_alternative<GraphMaterial>(scene.materials[index])) {
+        const SurfaceOverrides o = material_overrides(scene.materials, index, sp, u_mix);
+        out.line_color = o.line_color;
+        out.line_width = o.line_width.value_or(1.f);
+      }
       return out;
     }
     if (out.via == kDirect) out.via = object.source;

@@ -5,6 +5,8 @@
 // pixels follow the same rules, so lines appear in reflections and refractions.
 #pragma once
 
+#include <optional>
+
 #include "core/geometry/ray.h"
 #include "core/integrator/path_tracer.h"
 #include "core/world/render_scene.h"
@@ -22,6 +24,8 @@ struct PerceivedSurface {
   Point3 p{0.f};
   Normal3 ng{0.f}, ns{0.f};  // facing the arriving ray
   float distance = 0.f;      // along the whole chain from the camera
+  std::optional<Color> line_color;  // a material graph's line colour output here
+  float line_width = 1.f;           // and its line width output
 };
 
 // Follows at most kMaxPerceivedChain specular vertices; u_mix resolves mix

@@ -24,9 +24,16 @@ Color root_color(std::span<const Material> materials, uint32_t material, const S
   si.uv = root.uv;
   si.color = root.color;
   si.prim = root.prim;
-  const uint32_t resolved = resolve_mix(materials, material, si, mix_u);
-  if (resolved == kNoMaterial) return Color(0.f);
-  return material_albedo(materials[resolved], si);
+  // Strokes are painted seen head-on: the view is along the normal.
+  ShadingPoint sp = shading_point(si, root.n);
+  sp.material_id = material;
+  if (material < materials.size() && std::holds_alternative<GraphMaterial>(materials[material])) {
+    if (auto c = material_overrides(materials, material, sp, mix_u).stroke_color) return *c;
+  }
+  Material scratch;
+  const ResolvedMaterial resolved = resolve_material(materials, material, sp, mix_u, scratch);
+  if (!resolved.material) return Color(0.f);
+  return material_albedo(*resolved.material, si);
 }
 
 std::vector<Color> stroke_colors(std::span<const Material> materials, uint32_t material,

@@ -1,0 +1,605 @@
+// Graph checks and lowering. The graph is checked whole first, so every problem
+// is reported at once; lowering then walks the nodes that reach the output in
+// dependency order (Kahn's algorithm, no recursion), emitting one instruction per
+// output socket something reads, into virtual registers that folding and register
+// allocation then turn into the program.
+#include "core/compiler/compile_graph.h"
+
+#include "core/document/json_syntax.h"
+#include "core/materials/shader_eval.h"
+
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <optional>
+
+namespace inkray {
+namespace {
+
+std::string node_label(const GraphDesc& g, size_t i) {
+  return element_path("nodes", i) + " \"" + g.nodes[i].id + "\" (" + std::string(node_type_name(g.nodes[i].data)) +
+         ")";
+}
+
+std::string socket_list(std::span<const SocketDecl> sockets) {
+  std::string out;
+  for (const SocketDecl& s : sockets) out += (out.empty() ? "" : ", ") + std::string(s.name);
+  return out.empty() ? "none" : out;
+}
+std::string socket_list(const std::vector<SocketInfo>& sockets) {
+  std::string out;
+  for (const SocketInfo& s : sockets) out += (out.empty() ? "" : ", ") + std::string(s.name);
+  return out.empty() ? "none" : out;
+}
+std::string type_name(SocketType t) { return std::string(kSocketTypeNames[size_t(t)]); }
+
+// A link that passed the checks, by node index and socket index.
+struct Edge {
+  size_t from, output, to, input;
+};
+
+// The checked graph: what lowering needs, found once.
+struct Checked {
+  size_t output_node = 0;
+  std::vector<std::vector<SocketInfo>> inputs;                 // per node
+  std::vector<std::vector<std::optional<Edge>>> incoming;      // per node, per input socket
+  std::vector<size_t> order;                                   // reachable nodes, sources first
+};
+
+bool check_graph(const GraphDesc& g, Checked& c, std::vector<std::string>& errors) {
+  const size_t before = errors.size();
+  std::map<std::string, size_t> by_id;
+  std::vector<size_t> outputs;
+  c.inputs.resize(g.nodes.size());
+  c.incoming.resize(g.nodes.size());
+  for (size_t i = 0; i < g.nodes.size(); ++i) {
+    c.inputs[i] = node_inputs(g.nodes[i].data);
+    c.incoming[i].resize(c.inputs[i].size());
+    if (std::holds_alternative<OutputNode>(g.nodes[i].data)) outputs.push_back(i);
+    if (g.nodes[i].id.empty()) continue;  // the reader reported it
+    const auto [it, fresh] = by_id.emplace(g.nodes[i].id, i);
+    if (!fresh)
+      errors.push_back(element_path("nodes", i) + ".id: duplicate node id \"" + g.nodes[i].id + "\" (also " +
+                       element_path("nodes", it->second) + ")");
+  }
+  if (outputs.empty()) errors.push_back("nodes: the graph has no output node (add {\"id\": ..., \"type\": \"output\"})");
+  for (size_t k = 1; k < outputs.size(); ++k)
+    errors.push_back(node_label(g, outputs[k]) + ": a second output node (the first is " +
+                     node_label(g, outputs[0]) + ")");
+  if (!outputs.empty()) c.output_node = outputs[0];
+
+  std::string ids;
+  for (size_t i = 0; i < g.nodes.size() && i < 10; ++i) ids += (i ? ", " : "") + g.nodes[i].id;
+  if (g.nodes.size() > 10) ids += ", ...";
+  std::vector<std::vector<size_t>> users(g.nodes.size());
+  std::vector<size_t> pending(g.nodes.size(), 0);
+  for (size_t k = 0; k < g.links.size(); ++k) {
+    const GraphLinkDesc& l = g.links[k];
+    const std::string at = element_path("links", k);
+    const auto from = by_id.find(l.from), to = by_id.find(l.to);
+    if (from == by_id.end()) errors.push_back(at + ".from: no node \"" + l.from + "\" (nodes: " + ids + ")");
+    if (to == by_id.end()) errors.push_back(at + ".to: no node \"" + l.to + "\" (nodes: " + ids + ")");
+    if (from == by_id.end() || to == by_id.end()) continue;
+    const auto outs = node_outputs(g.nodes[from->second].data);
+    const auto out_it = std::find_if(outs.begin(), outs.end(), [&](const SocketDecl& s) { return s.name == l.output; });
+    const auto& ins = c.inputs[to->second];
+    const auto in_it = std::find_if(ins.begin(), ins.end(), [&](const SocketInfo& s) { return s.name == l.input; });
+    if (out_it == outs.end())
+      errors.push_back(at + ".output: " + node_label(g, from->second) + " has no output \"" + l.output +
+                       "\" (outputs: " + socket_list(outs) + ")");
+    if (in_it == ins.end())
+      errors.push_back(at + ".input: " + node_label(g, to->second) + " has no input \"" + l.input +
+                       "\" (inputs: " + socket_list(ins) + ")");
+    if (out_it == outs.end() || in_it == ins.end()) continue;
+    if (!socket_converts(out_it->type, in_it->type)) {
+      errors.push_back(at + ": cannot link " + type_name(out_it->type) + " output \"" + l.output + "\" of \"" +
+                       l.from + "\" to " + type_name(in_it->type) + " input \"" + l.input + "\" of \"" + l.to + "\"");
+      continue;
+    }
+    const size_t input = size_t(in_it - ins.begin());
+    auto& slot = c.incoming[to->second][input];
+    if (slot) {
+      errors.push_back(at + ".input: input \"" + l.input + "\" of \"" + l.to + "\" is already linked from \"" +
+                       g.nodes[slot->from].id + "\"");
+      continue;
+    }
+    slot = Edge{from->second, size_t(out_it - outs.begin()), to->second, input};
+    users[from->second].push_back(to->second);
+    ++pending[to->second];
+  }
+  // Kahn's algorithm over the whole graph: nodes never released sit on or behind a cycle.
+  std::deque<size_t> ready;
+  for (size_t i = 0; i < g.nodes.size(); ++i)
+    if (pending[i] == 0) ready.push_back(i);
+  std::vector<size_t> order;
+  std::vector<size_t> left = pending;
+  while (!ready.empty()) {
+    const size_t i = ready.front();
+    ready.pop_front();
+    order.push_back(i);
+    for (size_t u : users[i])
+      if (--left[u] == 0) ready.push_back(u);
+  }
+  if (order.size() < g.nodes.size()) {
+    std::string cycle;
+    for (size_t i = 0; i < g.nodes.size(); ++i)
+      if (left[i] > 0) cycle += (cycle.empty() ? "" : ", ") + g.nodes[i].id;
+    errors.push_back("links: these nodes form or follow a cycle: " + cycle);
+  }
+  if (errors.size() > before) return false;
+
+  // Only what reaches the output is lowered.
+  std::vector<bool> reach(g.nodes.size(), false);
+  std::vector<size_t> stack = {c.output_node};
+  reach[c.output_node] = true;
+  while (!stack.empty()) {
+    const size_t i = stack.back();
+    stack.pop_back();
+    for (const auto& e : c.incoming[i])
+      if (e && !reach[e->from]) reach[e->from] = true, stack.push_back(e->from);
+  }
+  for (size_t i : order)
+    if (reach[i]) c.order.push_back(i);
+  return true;
+}
+
+// ---------------------------------------------------------------- lowering
+using VReg = uint32_t;
+struct Value {
+  VReg reg = 0;
+  SocketType type = SocketType::float_value;
+};
+
+struct IrInstr {
+  ShaderInstr instr;  // in and out hold virtual registers here
+  std::array<VReg, kMaxShaderInputs> in{};
+  VReg out = 0;
+  int inputs = 0;
+};
+
+class Lowering {
+ public:
+  Lowering(const GraphDesc& g, const Checked& c, const std::filesystem::path& base, AssetCache& assets,
+           std::vector<std::string>& errors)
+      : g_(g), c_(c), base_(base), assets_(assets), errors_(errors) {}
+
+  std::shared_ptr<const ShaderProgram> run();
+
+ private:
+  VReg constant(Vec3 v) {
+    const auto key = std::array<float, 3>{v.x, v.y, v.z};
+    if (const auto it = constant_regs_.find(key); it != constant_regs_.end()) return it->second;
+    const VReg r = new_reg();
+    is_constant_[r] = true;
+    value_[r] = v;
+    constant_regs_[key] = r;
+    return r;
+  }
+  VReg new_reg() {
+    is_constant_.push_back(false);
+    value_.emplace_back(0.f);
+    return VReg(is_constant_.size() - 1);
+  }
+  VReg emit(ShaderOp op, std::initializer_list<VReg> in, uint8_t mode = 0, uint32_t aux = 0) {
+    IrInstr ir;
+    ir.instr.op = op;
+    ir.instr.mode = mode;
+    ir.instr.aux = aux;
+    ir.inputs = int(in.size());
+    std::copy(in.begin(), in.end(), ir.in.begin());
+    ir.out = new_reg();
+    code_.push_back(ir);
+    return ir.out;
+  }
+  // The register holding v as the type an input expects (graph_sockets.h conversions).
+  VReg convert(Value v, SocketType to) {
+    if (v.type == to || to == SocketType::closure) return v.reg;
+    if (to == SocketType::float_value && v.type == SocketType::color) return emit(ShaderOp::luminance, {v.reg});
+    if (to == SocketType::float_value && v.type == SocketType::vector) return emit(ShaderOp::mean, {v.reg});
+    return v.reg;  // floats are stored splatted; colours and vectors share a layout
+  }
+  VReg implicit(Implicit kind) {
+    VReg& cached = kind == Implicit::uv ? uv_ : position_;
+    if (cached == kNone) cached = emit(kind == Implicit::uv ? ShaderOp::uv : ShaderOp::position, {});
+    return cached;
+  }
+  // The value of node i's input `index`: its link, else its parameter's constant.
+  template <class T>
+  VReg input(size_t node, const T& desc, size_t index);
+  VReg input(size_t node, std::string_view name);
+  void lower_node(size_t node);
+  std::optional<VReg> closure_input(size_t node, std::string_view name);
+  VReg color_input_texture(size_t node, const ColorInput& in);
+  void fold();
+  void remove_dead();
+  std::shared_ptr<ShaderProgram> allocate();
+  void fail(size_t node, const std::string& what) { errors_.push_back(node_label(g_, node) + ": " + what); }
+
+  static constexpr VReg kNone = UINT32_MAX;
+  const GraphDesc& g_;
+  const Checked& c_;
+  const std::filesystem::path& base_;
+  AssetCache& assets_;
+  std::vector<std::string>& errors_;
+
+  std::vector<bool> is_constant_;
+  std::vector<Vec3> value_;
+  std::map<std::array<float, 3>, VReg> constant_regs_;
+  std::vector<IrInstr> code_;
+  VReg uv_ = kNone, position_ = kNone;
+  std::map<std::pair<size_t, size_t>, Value> outputs_;  // (node, output socket) -> value
+  std::map<size_t, uint32_t> closure_of_;               // closure node index -> ClosureNode index
+  std::vector<ClosureNode> closures_;
+  std::vector<ClosureLeaf> leaves_;
+  std::vector<std::vector<VReg>> leaf_inputs_;
+  std::vector<VReg> mix_fac_;                            // per ClosureNode: its fac register, or kNone
+  std::shared_ptr<ShaderProgram> program_ = std::make_shared<ShaderProgram>();
+  VReg line_color_ = kNone, line_width_ = kNone, stroke_color_ = kNone;
+  size_t run_nodes_ = 0;
+};
+
+// Node i's output `name` was lowered: record it for the nodes downstream.
+#define INKRAY_OUT(name_index, value) outputs_[{node, size_t(name_index)}] = (value)
+
+// The valued parameters of a node in list order: each one's constant, and the
+// texture a closure node's colour input holds instead of a constant, if any.
+struct ValuedInputs {
+  std::vector<Vec3> constants;
+  std::vector<const ColorInput*> textures;
+  template <class F>
+  void operator()(const Param& p, F& field) {
+    if (!socket_type_of(p.kind)) return;
+    const ColorInput* texture = nullptr;
+    Vec3 value(0.f);
+    if constexpr (std::is_same_v<F, float>) {
+      value = Vec3(field);
+    } else if constexpr (std::is_same_v<F, Vec3>) {
+      value = field;
+    } else if constexpr (std::is_same_v<F, ColorInput>) {
+      if (const Color* c = std::get_if<Color>(&field)) {
+        value = *c;
+      } else {
+        texture = &field;
+      }
+    }
+    constants.push_back(value);
+    textures.push_back(texture);
+  }
+};
+
+template <class T>
+VReg Lowering::input(size_t node, const T& desc, size_t index) {
+  const SocketInfo& socket = c_.inputs[node][index];
+  if (const auto& e = c_.incoming[node][index]) {
+    const auto it = outputs_.find({e->from, e->output});
+    return convert(it->second, socket.type);
+  }
+  if (!socket.has_value) {
+    if (socket.implicit != Implicit::none) return implicit(socket.implicit);
+    return constant(Vec3(socket.type == SocketType::float_value ? 1.f : 0.f));
+  }
+  ValuedInputs valued;
+  visit_params(const_cast<T&>(desc), valued);  // the visitor only reads
+  if (valued.textures[index]) return color_input_texture(node, *valued.textures[index]);
+  return constant(valued.constants[index]);
+}
+
+VReg Lowering::color_input_texture(size_t node, const ColorInput& in) {
+  if (const auto* ch = std::get_if<CheckerTextureDesc>(&in))
+    return emit(ShaderOp::checker_color, {implicit(Implicit::uv), constant(ch->even), constant(ch->odd),
+                                          constant(Vec3(ch->scale))});
+  const auto& img = std::get<ImageTextureDesc>(in);
+  std::string error;
+  auto image = assets_.image(base_ / img.path, img.srgb, &error);
+  if (!image) {
+    fail(node, error);
+    return constant(Vec3(0.f));
+  }
+  program_->images.push_back({std::move(image), nullptr});
+  const VReg texel = emit(ShaderOp::image_color, {implicit(Implicit::uv)}, 0, uint32_t(program_->images.size() - 1));
+  if (img.scale == Color(1.f)) return texel;
+  return emit(ShaderOp::vector_math, {texel, constant(img.scale), constant(Vec3(1.f))},
+              uint8_t(ShaderVector::multiply));
+}
+
+std::optional<VReg> Lowering::closure_input(size_t node, std::string_view name) {
+  const auto& ins = c_.inputs[node];
+  for (size_t i = 0; i < ins.size(); ++i) {
+    if (ins[i].name != name) continue;
+    if (const auto& e = c_.incoming[node][i]) return closure_of_.at(e->from);
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+void Lowering::lower_node(size_t node) {
+  const NodeVariant& data = g_.nodes[node].data;
+  const auto out_count = node_outputs(data).size();
+  std::visit(
+      [&]<class T>(const T& d) {
+        // The valued inputs in order, as registers.
+        const auto in = [&](size_t i) { return input(node, d, i); };
+        if constexpr (std::is_same_v<T, OutputNode>) {
+          // The root is the last closure made (allocate() puts it first).
+          if (auto root = closure_input(node, "surface")) {
+            closures_.push_back(closures_[*root]);
+            mix_fac_.push_back(mix_fac_[*root]);
+          }
+          for (size_t i = 1; i < 4; ++i) {
+            if (!c_.incoming[node][i]) continue;
+            const VReg r = in(i);
+            (i == 1 ? line_color_ : i == 2 ? line_width_ : stroke_color_) = r;
+          }
+        } else if constexpr (std::is_same_v<T, ValueNode>) {
+          INKRAY_OUT(0, (Value{constant(Vec3(d.value)), SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, RgbNode>) {
+          INKRAY_OUT(0, (Value{constant(d.color), SocketType::color}));
+        } else if constexpr (std::is_same_v<T, ImageTextureNode>) {
+          std::string error;
+          auto image = assets_.image(base_ / d.path, d.srgb, &error);
+          if (!image) return fail(node, "path: " + error);
+          program_->images.push_back({std::move(image), nullptr});
+          const uint32_t aux = uint32_t(program_->images.size() - 1);
+          const VReg uv = in(0);
+          INKRAY_OUT(0, (Value{emit(ShaderOp::image_color, {uv}, 0, aux), SocketType::color}));
+          INKRAY_OUT(1, (Value{emit(ShaderOp::image_alpha, {uv}, 0, aux), SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, CheckerNode>) {
+          const VReg c1 = in(0), c2 = in(1), scale = in(2), uv = in(3);
+          INKRAY_OUT(0, (Value{emit(ShaderOp::checker_color, {uv, c1, c2, scale}), SocketType::color}));
+          INKRAY_OUT(1, (Value{emit(ShaderOp::checker_fac, {uv, c1, c2, scale}), SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, NoiseNode>) {
+          const VReg scale = in(0), rough = in(1), distortion = in(2), p = in(3);
+          const auto mode = uint8_t(d.noise);
+          const auto oct = uint32_t(d.octaves);
+          INKRAY_OUT(0, (Value{emit(ShaderOp::noise_fac, {p, scale, rough, distortion}, mode, oct),
+                               SocketType::float_value}));
+          INKRAY_OUT(1, (Value{emit(ShaderOp::noise_color, {p, scale, rough, distortion}, mode, oct),
+                               SocketType::color}));
+        } else if constexpr (std::is_same_v<T, VoronoiNode>) {
+          const VReg scale = in(0), randomness = in(1), p = in(2);
+          INKRAY_OUT(0, (Value{emit(ShaderOp::voronoi_distance, {p, scale, randomness}), SocketType::float_value}));
+          INKRAY_OUT(1, (Value{emit(ShaderOp::voronoi_color, {p, scale, randomness}), SocketType::color}));
+          INKRAY_OUT(2, (Value{emit(ShaderOp::voronoi_position, {p, scale, randomness}), SocketType::vector}));
+        } else if constexpr (std::is_same_v<T, ColorRampNode>) {
+          std::vector<RampStop> stops;
+          for (const RampStopDesc& s : d.stops) stops.push_back({s.position, s.color});
+          std::stable_sort(stops.begin(), stops.end(),
+                           [](const RampStop& a, const RampStop& b) { return a.position < b.position; });
+          program_->ramps.push_back(std::move(stops));
+          INKRAY_OUT(0, (Value{emit(ShaderOp::ramp, {in(0)}, uint8_t(d.interpolation),
+                                    uint32_t(program_->ramps.size() - 1)),
+                               SocketType::color}));
+        } else if constexpr (std::is_same_v<T, MathNode>) {
+          VReg r = emit(ShaderOp::math, {in(0), in(1), in(2)}, uint8_t(d.operation));
+          if (d.clamp_result) r = emit(ShaderOp::clamp01, {r});
+          INKRAY_OUT(0, (Value{r, SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, MapRangeNode>) {
+          INKRAY_OUT(0, (Value{emit(ShaderOp::map_range, {in(0), in(1), in(2), in(3), in(4)},
+                                    uint8_t(d.clamp_result)),
+                               SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, MixColorNode>) {
+          VReg r = emit(ShaderOp::mix_color, {in(0), in(1), in(2)}, uint8_t(d.blend));
+          if (d.clamp_result) r = emit(ShaderOp::clamp01, {r});
+          INKRAY_OUT(0, (Value{r, SocketType::color}));
+        } else if constexpr (std::is_same_v<T, VectorMathNode>) {
+          const VReg a = in(0), b = in(1), s = in(2);
+          INKRAY_OUT(0, (Value{emit(ShaderOp::vector_math, {a, b, s}, uint8_t(d.operation)), SocketType::vector}));
+          INKRAY_OUT(1, (Value{emit(ShaderOp::vector_value, {a, b, s}, uint8_t(d.operation)),
+                               SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, HsvNode>) {
+          INKRAY_OUT(0, (Value{emit(ShaderOp::hsv_adjust, {in(0), in(1), in(2), in(3), in(4)}), SocketType::color}));
+        } else if constexpr (std::is_same_v<T, ConvertColorNode>) {
+          const ShaderOp op = d.conversion == ColorConversion::rgb_to_hsv ? ShaderOp::rgb_to_hsv : ShaderOp::hsv_to_rgb;
+          INKRAY_OUT(0, (Value{emit(op, {in(0)}), SocketType::color}));
+        } else if constexpr (std::is_same_v<T, SeparateNode>) {
+          const VReg v = in(0);
+          INKRAY_OUT(0, (Value{emit(ShaderOp::separate_x, {v}), SocketType::float_value}));
+          INKRAY_OUT(1, (Value{emit(ShaderOp::separate_y, {v}), SocketType::float_value}));
+          INKRAY_OUT(2, (Value{emit(ShaderOp::separate_z, {v}), SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, CombineNode>) {
+          const VReg v = emit(ShaderOp::combine, {in(0), in(1), in(2)});
+          INKRAY_OUT(0, (Value{v, SocketType::vector}));
+          INKRAY_OUT(1, (Value{v, SocketType::color}));
+        } else if constexpr (std::is_same_v<T, GeometryNode>) {
+          constexpr ShaderOp ops[] = {ShaderOp::position, ShaderOp::normal,    ShaderOp::true_normal,
+                                      ShaderOp::uv,       ShaderOp::incoming,  ShaderOp::facing,
+                                      ShaderOp::object_id, ShaderOp::material_id, ShaderOp::depth,
+                                      ShaderOp::random};
+          for (size_t k = 0; k < out_count; ++k)
+            INKRAY_OUT(k, (Value{k == 3 ? implicit(Implicit::uv) : emit(ops[k], {}), T::outputs[k].type}));
+        } else if constexpr (std::is_same_v<T, LightInputNode>) {
+          program_->uses_light = true;
+          INKRAY_OUT(0, (Value{emit(ShaderOp::n_dot_l, {}), SocketType::float_value}));
+          INKRAY_OUT(1, (Value{emit(ShaderOp::shadow, {}), SocketType::float_value}));
+          INKRAY_OUT(2, (Value{emit(ShaderOp::light_color, {}), SocketType::color}));
+        } else if constexpr (std::is_same_v<T, FresnelNode>) {
+          INKRAY_OUT(0, (Value{emit(ShaderOp::fresnel, {in(0)}), SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, LayerWeightNode>) {
+          const VReg blend = in(0);
+          INKRAY_OUT(0, (Value{emit(ShaderOp::layer_weight_fresnel, {blend}), SocketType::float_value}));
+          INKRAY_OUT(1, (Value{emit(ShaderOp::layer_weight_facing, {blend}), SocketType::float_value}));
+        } else if constexpr (std::is_same_v<T, MixClosureNode> || std::is_same_v<T, AddClosureNode>) {
+          const auto side = [&](std::string_view name) -> uint32_t {
+            if (auto c = closure_input(node, name)) return *c;
+            // An unlinked side is a black surface that ends the path.
+            leaves_.push_back({UnlitMaterial{ConstantTexture{Color(0.f)}}, {}});
+            leaf_inputs_.emplace_back();
+            closures_.push_back({ClosureNode::Kind::leaf, uint16_t(leaves_.size() - 1)});
+            mix_fac_.push_back(kNone);
+            return uint32_t(closures_.size() - 1);
+          };
+          ClosureNode cn;
+          cn.a = uint16_t(side("a"));
+          cn.b = uint16_t(side("b"));
+          VReg fac = kNone;
+          if constexpr (std::is_same_v<T, MixClosureNode>) {
+            cn.kind = ClosureNode::Kind::mix;
+            fac = in(0);
+          } else {
+            cn.kind = ClosureNode::Kind::add;
+          }
+          closures_.push_back(cn);
+          mix_fac_.push_back(fac);
+          closure_of_[node] = uint32_t(closures_.size() - 1);
+        } else {
+          // A closure node: a plain material's description.
+          std::string error;
+          auto tmpl = compile_closure_template(MaterialVariant(d), base_, assets_, &error);
+          if (!tmpl) return fail(node, error);
+          std::vector<VReg> regs;
+          for (size_t i = 0; i < c_.inputs[node].size(); ++i)
+            if (c_.inputs[node][i].has_value) regs.push_back(convert({in(i), c_.inputs[node][i].type}, c_.inputs[node][i].type));
+          leaves_.push_back({std::move(*tmpl), {}});
+          leaf_inputs_.push_back(std::move(regs));
+          closures_.push_back({ClosureNode::Kind::leaf, uint16_t(leaves_.size() - 1)});
+          mix_fac_.push_back(kNone);
+          closure_of_[node] = uint32_t(closures_.size() - 1);
+        }
+      },
+      data);
+}
+#undef INKRAY_OUT
+
+// Instructions whose inputs are all constants and that read nothing of the hit become constants.
+void Lowering::fold() {
+  std::vector<IrInstr> kept;
+  for (const IrInstr& ir : code_) {
+    bool constant_inputs = instr_is_pure(ir.instr.op);
+    for (int i = 0; i < ir.inputs && constant_inputs; ++i) constant_inputs = is_constant_[ir.in[size_t(i)]];
+    if (!constant_inputs) {
+      kept.push_back(ir);
+      continue;
+    }
+    Vec3 registers[kMaxShaderInputs];
+    ShaderInstr local = ir.instr;
+    for (int i = 0; i < ir.inputs; ++i) {
+      registers[i] = value_[ir.in[size_t(i)]];
+      local.in[size_t(i)] = uint16_t(i);
+    }
+    const Vec3 v = eval_instr(*program_, local, registers, ShadingPoint{});
+    is_constant_[ir.out] = true;
+    value_[ir.out] = Vec3(std::isfinite(v.x) ? v.x : 0.f, std::isfinite(v.y) ? v.y : 0.f,
+                          std::isfinite(v.z) ? v.z : 0.f);
+  }
+  code_ = std::move(kept);
+}
+
+// Instructions nothing reads: outputs of a node that no link takes (a geometry
+// node's other nine), or inputs of folded instructions.
+void Lowering::remove_dead() {
+  std::vector<bool> live(is_constant_.size(), false);
+  const auto root = [&](VReg r) {
+    if (r != kNone) live[r] = true;
+  };
+  for (const auto& regs : leaf_inputs_)
+    for (VReg r : regs) root(r);
+  for (VReg r : mix_fac_) root(r);
+  root(line_color_), root(line_width_), root(stroke_color_);
+  std::vector<IrInstr> kept;
+  for (auto it = code_.rbegin(); it != code_.rend(); ++it) {
+    if (!live[it->out]) continue;
+    for (int k = 0; k < it->inputs; ++k) live[it->in[size_t(k)]] = true;
+    kept.push_back(*it);
+  }
+  code_.assign(kept.rbegin(), kept.rend());
+}
+
+// Constants first, then temporaries by linear scan: a register is free again after
+// its value's last reader. What the closures and outputs read lives to the end.
+std::shared_ptr<ShaderProgram> Lowering::allocate() {
+  const size_t n = is_constant_.size();
+  constexpr size_t kForever = SIZE_MAX;
+  std::vector<size_t> last_use(n, 0);
+  std::vector<bool> used(n, false);
+  for (size_t i = 0; i < code_.size(); ++i)
+    for (int k = 0; k < code_[i].inputs; ++k) last_use[code_[i].in[size_t(k)]] = i, used[code_[i].in[size_t(k)]] = true;
+  auto keep = [&](VReg r) {
+    if (r != kNone) last_use[r] = kForever, used[r] = true;
+  };
+  for (const auto& regs : leaf_inputs_)
+    for (VReg r : regs) keep(r);
+  for (VReg r : mix_fac_) keep(r);
+  keep(line_color_), keep(line_width_), keep(stroke_color_);
+
+  std::vector<uint16_t> phys(n, kNoRegister);
+  ShaderProgram& p = *program_;
+  for (VReg r = 0; r < n; ++r) {
+    if (!is_constant_[r] || !used[r]) continue;
+    phys[r] = uint16_t(p.constants.size());
+    p.constants.push_back({value_[r].x, value_[r].y, value_[r].z});
+  }
+  const size_t first_temp = p.constants.size();
+  std::vector<uint16_t> free_regs;
+  size_t next = first_temp;
+  std::vector<std::vector<VReg>> dying(code_.size());
+  for (VReg r = 0; r < n; ++r)
+    if (!is_constant_[r] && used[r] && last_use[r] != kForever) dying[last_use[r]].push_back(r);
+  for (size_t i = 0; i < code_.size(); ++i) {
+    IrInstr& ir = code_[i];
+    for (int k = 0; k < ir.inputs; ++k) ir.instr.in[size_t(k)] = phys[ir.in[size_t(k)]];
+    for (VReg r : dying[i]) free_regs.push_back(phys[r]);  // read before the output is written
+    if (!free_regs.empty()) {
+      phys[ir.out] = free_regs.back();
+      free_regs.pop_back();
+    } else {
+      phys[ir.out] = uint16_t(std::min<size_t>(next++, kNoRegister - 1));
+    }
+    ir.instr.out = phys[ir.out];
+    // A value nobody reads (an output of a multi-output node) frees its register at once.
+    if (!used[ir.out]) free_regs.push_back(phys[ir.out]);
+    p.code.push_back(ir.instr);
+  }
+  p.register_count = int(next);
+  if (next > size_t(kMaxShaderRegisters)) {
+    errors_.push_back("the graph needs " + std::to_string(next) + " registers; at most " +
+                      std::to_string(kMaxShaderRegisters) + " fit (simplify the graph)");
+    return nullptr;
+  }
+  for (size_t l = 0; l < leaves_.size(); ++l) {
+    leaves_[l].inputs.clear();
+    for (VReg r : leaf_inputs_[l]) leaves_[l].inputs.push_back(phys[r]);
+  }
+  // The root is the last closure made; reversing puts it first and children after parents.
+  const size_t count = closures_.size();
+  for (size_t k = 0; k < count; ++k) {
+    ClosureNode cn = closures_[count - 1 - k];
+    if (cn.kind != ClosureNode::Kind::leaf) {
+      cn.a = uint16_t(count - 1 - cn.a);
+      cn.b = uint16_t(count - 1 - cn.b);
+      if (cn.kind == ClosureNode::Kind::mix) cn.fac = phys[mix_fac_[count - 1 - k]];
+    }
+    p.closures.push_back(cn);
+  }
+  p.leaves = std::move(leaves_);
+  const auto out = [&](VReg r) { return r == kNone ? kNoRegister : phys[r]; };
+  p.line_color = out(line_color_);
+  p.line_width = out(line_width_);
+  p.stroke_color = out(stroke_color_);
+  return program_;
+}
+
+std::shared_ptr<const ShaderProgram> Lowering::run() {
+  const size_t before = errors_.size();
+  for (size_t node : c_.order) lower_node(node);
+  if (errors_.size() > before) return nullptr;
+  fold();
+  remove_dead();
+  program_->nodes_in_graph = g_.nodes.size();
+  program_->nodes_run = c_.order.size();
+  return allocate();
+}
+
+}  // namespace
+
+std::shared_ptr<const ShaderProgram> compile_graph(const GraphDesc& graph, const std::filesystem::path& base_dir,
+                                                   AssetCache& assets, std::vector<std::string>& errors) {
+  Checked checked;
+  if (!check_graph(graph, checked, errors)) return nullptr;
+  if (graph.nodes.size() > 65535) {
+    errors.push_back("nodes: more than 65535 nodes");
+    return nullptr;
+  }
+  return Lowering(graph, checked, base_dir, assets, errors).run();
+}
+
+}  // namespace inkray
