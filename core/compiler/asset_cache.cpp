@@ -40,6 +40,19 @@ std::shared_ptr<const RgbImage> AssetCache::image(const std::filesystem::path& f
   return stamp ? keep(key, std::move(value)) : value;
 }
 
+std::shared_ptr<const std::vector<float>> AssetCache::image_alpha(const std::filesystem::path& file,
+                                                                std::string* error) {
+  const auto stamp = file_stamp(file);
+  const std::string key = "image alpha|" + (stamp ? *stamp : file.string());
+  if (stamp)
+    if (auto found = find<std::vector<float>>(key)) return found;
+  note_read(file);
+  std::vector<float> alpha;
+  if (!read_image_alpha(file, &alpha, error)) return nullptr;
+  auto value = std::make_shared<const std::vector<float>>(std::move(alpha));
+  return stamp ? keep(key, std::move(value)) : value;
+}
+
 std::optional<ImageSize> AssetCache::image_size(const std::filesystem::path& file, std::string* error) {
   const auto stamp = file_stamp(file);
   const std::string key = "image size|" + (stamp ? *stamp : file.string());

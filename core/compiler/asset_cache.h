@@ -34,6 +34,8 @@ class AssetCache {
 
   // A decoded image (linear RGB), by stamp and colour encoding.
   std::shared_ptr<const RgbImage> image(const std::filesystem::path& file, bool srgb, std::string* error);
+  // An image's alpha channel (empty without one), by stamp.
+  std::shared_ptr<const std::vector<float>> image_alpha(const std::filesystem::path& file, std::string* error);
   // An image's size from its header (image_header.h), by stamp.
   std::optional<ImageSize> image_size(const std::filesystem::path& file, std::string* error);
   // An OBJ mesh as read, in object space, by stamp.

@@ -209,6 +209,11 @@ class Lowering {
   VReg input(size_t node, std::string_view name);
   void lower_node(size_t node);
   std::optional<VReg> closure_input(size_t node, std::string_view name);
+  bool output_linked(size_t node, std::string_view output) const {
+    for (const GraphLinkDesc& l : g_.links)
+      if (l.from == g_.nodes[node].id && l.output == output) return true;
+    return false;
+  }
   VReg color_input_texture(size_t node, const ColorInput& in);
   void fold();
   void remove_dead();
@@ -338,7 +343,14 @@ void Lowering::lower_node(size_t node) {
           std::string error;
           auto image = assets_.image(base_ / d.path, d.srgb, &error);
           if (!image) return fail(node, "path: " + error);
-          program_->images.push_back({std::move(image), nullptr});
+          // The alpha channel is decoded only for graphs that read it.
+          std::shared_ptr<const std::vector<float>> alpha;
+          if (output_linked(node, "alpha")) {
+            alpha = assets_.image_alpha(base_ / d.path, &error);
+            if (!alpha) return fail(node, "path: " + error);
+            if (alpha->size() != image->pixels.size()) alpha = nullptr;  // none: opaque
+          }
+          program_->images.push_back({std::move(image), std::move(alpha)});
           const uint32_t aux = uint32_t(program_->images.size() - 1);
           const VReg uv = in(0);
           INKRAY_OUT(0, (Value{emit(ShaderOp::image_color, {uv}, 0, aux), SocketType::color}));

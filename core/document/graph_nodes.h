@@ -1,4 +1,4 @@
-// The node types of material graphs (docs/scene-format.md, "Material graphs").
+// The node types of material graphs (docs/scene-format.md, "a material built from nodes").
 // Each is a plain struct with a JSON type name, its declared outputs, any
 // link-only inputs, and one parameter list: the parameters whose kind carries a
 // value are its input sockets (graph_sockets.h), the rest are settings.

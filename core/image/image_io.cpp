@@ -164,6 +164,28 @@ bool read_image(const std::filesystem::path& file, bool srgb, RgbImage* image, s
   return true;
 }
 
+bool read_image_alpha(const std::filesystem::path& file, std::vector<float>* alpha, std::string* error) {
+  const std::string name = file.string();
+  alpha->clear();
+  if (!read_image_size(file, error)) return false;
+  int w = 0, h = 0, channels = 0;
+  if (stbi_is_hdr(name.c_str())) return true;  // HDR formats carry no alpha
+  if (!stbi_info(name.c_str(), &w, &h, &channels)) {
+    *error = name + ": cannot read image (" + stbi_failure_reason() + ")";
+    return false;
+  }
+  if (channels != 2 && channels != 4) return true;
+  unsigned char* data = stbi_load(name.c_str(), &w, &h, &channels, 4);
+  if (!data) {
+    *error = name + ": cannot read image (" + stbi_failure_reason() + ")";
+    return false;
+  }
+  alpha->resize(size_t(w) * size_t(h));
+  for (size_t i = 0; i < alpha->size(); ++i) (*alpha)[i] = float(data[4 * i + 3]) / 255.f;
+  stbi_image_free(data);
+  return true;
+}
+
 bool read_pfm(const std::filesystem::path& file, RgbImage* image, std::string* error) {
   std::ifstream in(file, std::ios::binary);
   std::string magic;

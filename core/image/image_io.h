@@ -33,5 +33,8 @@ bool read_pfm(const std::filesystem::path& file, RgbImage* image, std::string* e
 // Reads PNG/JPEG/TGA/BMP/HDR to linear RGB; 8-bit images are decoded from sRGB
 // when srgb is true. Returns false and sets *error naming the file on failure.
 bool read_image(const std::filesystem::path& file, bool srgb, RgbImage* image, std::string* error);
+// The alpha channel of an 8-bit image with one (grey+alpha or RGBA), in [0, 1], rows as
+// read_image's; empty for an image without alpha (and for HDR files, which have none).
+bool read_image_alpha(const std::filesystem::path& file, std::vector<float>* alpha, std::string* error);
 
 }  // namespace inkray

@@ -8,6 +8,7 @@
 #include "support/file_helpers.h"
 
 #include <gtest/gtest.h>
+#include <stb_image_write.h>
 
 namespace inkray {
 namespace {
@@ -262,6 +263,19 @@ TEST(ShaderNodes, ImageTexture) {
   si.uv = Vec2(0.75f, 0.25f);  // bottom-right
   EXPECT_TRUE(near3(socket_value(g, "tex", "color", sp, dir.path()), Vec3(1, 1, 1), 1e-4f));
   EXPECT_EQ(socket_value(g, "tex", "alpha", sp, dir.path()).x, 1.f) << "an image without alpha is opaque";
+
+  // An RGBA PNG: alpha 0.2 on the left column, 1 on the right.
+  const unsigned char rgba[16] = {255, 0, 0, 51, 0, 255, 0, 255, 0, 0, 255, 51, 255, 255, 255, 255};
+  ASSERT_TRUE(stbi_write_png((dir / "a.png").c_str(), 2, 2, 4, rgba, 8));
+  GraphDesc ga;
+  ImageTextureNode with_alpha = tex;
+  with_alpha.path = "a.png";
+  add(ga, "tex", with_alpha);
+  si.uv = Vec2(0.25f, 0.75f);
+  EXPECT_NEAR(socket_value(ga, "tex", "alpha", sp, dir.path()).x, 0.2f, 1e-4f);
+  EXPECT_TRUE(near3(socket_value(ga, "tex", "color", sp, dir.path()), Vec3(1, 0, 0), 1e-4f));
+  si.uv = Vec2(0.75f, 0.25f);
+  EXPECT_NEAR(socket_value(ga, "tex", "alpha", sp, dir.path()).x, 1.f, 1e-4f);
 }
 
 // Implicit conversions between socket types, as Blender makes them.
