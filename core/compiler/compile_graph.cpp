@@ -1,149 +1,19 @@
-// Graph checks and lowering. The graph is checked whole first, so every problem
-// is reported at once; lowering then walks the nodes that reach the output in
-// dependency order (Kahn's algorithm, no recursion), emitting one instruction per
-// output socket something reads, into virtual registers that folding and register
-// allocation then turn into the program.
+// Graph lowering, once graph_checks has passed the whole graph: the nodes that
+// reach the output in dependency order, one instruction per output socket, into
+// virtual registers; then constant folding, dead-code removal and register
+// allocation turn them into the program.
 #include "core/compiler/compile_graph.h"
 
-#include "core/document/json_syntax.h"
+#include "core/compiler/graph_checks.h"
 #include "core/materials/shader_eval.h"
 
 #include <algorithm>
-#include <deque>
 #include <map>
 #include <optional>
 
 namespace inkray {
 namespace {
 
-std::string node_label(const GraphDesc& g, size_t i) {
-  return element_path("nodes", i) + " \"" + g.nodes[i].id + "\" (" + std::string(node_type_name(g.nodes[i].data)) +
-         ")";
-}
-
-std::string socket_list(std::span<const SocketDecl> sockets) {
-  std::string out;
-  for (const SocketDecl& s : sockets) out += (out.empty() ? "" : ", ") + std::string(s.name);
-  return out.empty() ? "none" : out;
-}
-std::string socket_list(const std::vector<SocketInfo>& sockets) {
-  std::string out;
-  for (const SocketInfo& s : sockets) out += (out.empty() ? "" : ", ") + std::string(s.name);
-  return out.empty() ? "none" : out;
-}
-std::string type_name(SocketType t) { return std::string(kSocketTypeNames[size_t(t)]); }
-
-// A link that passed the checks, by node index and socket index.
-struct Edge {
-  size_t from, output, to, input;
-};
-
-// The checked graph: what lowering needs, found once.
-struct Checked {
-  size_t output_node = 0;
-  std::vector<std::vector<SocketInfo>> inputs;                 // per node
-  std::vector<std::vector<std::optional<Edge>>> incoming;      // per node, per input socket
-  std::vector<size_t> order;                                   // reachable nodes, sources first
-};
-
-bool check_graph(const GraphDesc& g, Checked& c, std::vector<std::string>& errors) {
-  const size_t before = errors.size();
-  std::map<std::string, size_t> by_id;
-  std::vector<size_t> outputs;
-  c.inputs.resize(g.nodes.size());
-  c.incoming.resize(g.nodes.size());
-  for (size_t i = 0; i < g.nodes.size(); ++i) {
-    c.inputs[i] = node_inputs(g.nodes[i].data);
-    c.incoming[i].resize(c.inputs[i].size());
-    if (std::holds_alternative<OutputNode>(g.nodes[i].data)) outputs.push_back(i);
-    if (g.nodes[i].id.empty()) continue;  // the reader reported it
-    const auto [it, fresh] = by_id.emplace(g.nodes[i].id, i);
-    if (!fresh)
-      errors.push_back(element_path("nodes", i) + ".id: duplicate node id \"" + g.nodes[i].id + "\" (also " +
-                       element_path("nodes", it->second) + ")");
-  }
-  if (outputs.empty()) errors.push_back("nodes: the graph has no output node (add {\"id\": ..., \"type\": \"output\"})");
-  for (size_t k = 1; k < outputs.size(); ++k)
-    errors.push_back(node_label(g, outputs[k]) + ": a second output node (the first is " +
-                     node_label(g, outputs[0]) + ")");
-  if (!outputs.empty()) c.output_node = outputs[0];
-
-  std::string ids;
-  for (size_t i = 0; i < g.nodes.size() && i < 10; ++i) ids += (i ? ", " : "") + g.nodes[i].id;
-  if (g.nodes.size() > 10) ids += ", ...";
-  std::vector<std::vector<size_t>> users(g.nodes.size());
-  std::vector<size_t> pending(g.nodes.size(), 0);
-  for (size_t k = 0; k < g.links.size(); ++k) {
-    const GraphLinkDesc& l = g.links[k];
-    const std::string at = element_path("links", k);
-    const auto from = by_id.find(l.from), to = by_id.find(l.to);
-    if (from == by_id.end()) errors.push_back(at + ".from: no node \"" + l.from + "\" (nodes: " + ids + ")");
-    if (to == by_id.end()) errors.push_back(at + ".to: no node \"" + l.to + "\" (nodes: " + ids + ")");
-    if (from == by_id.end() || to == by_id.end()) continue;
-    const auto outs = node_outputs(g.nodes[from->second].data);
-    const auto out_it = std::find_if(outs.begin(), outs.end(), [&](const SocketDecl& s) { return s.name == l.output; });
-    const auto& ins = c.inputs[to->second];
-    const auto in_it = std::find_if(ins.begin(), ins.end(), [&](const SocketInfo& s) { return s.name == l.input; });
-    if (out_it == outs.end())
-      errors.push_back(at + ".output: " + node_label(g, from->second) + " has no output \"" + l.output +
-                       "\" (outputs: " + socket_list(outs) + ")");
-    if (in_it == ins.end())
-      errors.push_back(at + ".input: " + node_label(g, to->second) + " has no input \"" + l.input +
-                       "\" (inputs: " + socket_list(ins) + ")");
-    if (out_it == outs.end() || in_it == ins.end()) continue;
-    if (!socket_converts(out_it->type, in_it->type)) {
-      errors.push_back(at + ": cannot link " + type_name(out_it->type) + " output \"" + l.output + "\" of \"" +
-                       l.from + "\" to " + type_name(in_it->type) + " input \"" + l.input + "\" of \"" + l.to + "\"");
-      continue;
-    }
-    const size_t input = size_t(in_it - ins.begin());
-    auto& slot = c.incoming[to->second][input];
-    if (slot) {
-      errors.push_back(at + ".input: input \"" + l.input + "\" of \"" + l.to + "\" is already linked from \"" +
-                       g.nodes[slot->from].id + "\"");
-      continue;
-    }
-    slot = Edge{from->second, size_t(out_it - outs.begin()), to->second, input};
-    users[from->second].push_back(to->second);
-    ++pending[to->second];
-  }
-  // Kahn's algorithm over the whole graph: nodes never released sit on or behind a cycle.
-  std::deque<size_t> ready;
-  for (size_t i = 0; i < g.nodes.size(); ++i)
-    if (pending[i] == 0) ready.push_back(i);
-  std::vector<size_t> order;
-  std::vector<size_t> left = pending;
-  while (!ready.empty()) {
-    const size_t i = ready.front();
-    ready.pop_front();
-    order.push_back(i);
-    for (size_t u : users[i])
-      if (--left[u] == 0) ready.push_back(u);
-  }
-  if (order.size() < g.nodes.size()) {
-    std::string cycle;
-    for (size_t i = 0; i < g.nodes.size(); ++i)
-      if (left[i] > 0) cycle += (cycle.empty() ? "" : ", ") + g.nodes[i].id;
-    errors.push_back("links: these nodes form or follow a cycle: " + cycle);
-  }
-  if (errors.size() > before) return false;
-
-  // Only what reaches the output is lowered.
-  std::vector<bool> reach(g.nodes.size(), false);
-  std::vector<size_t> stack = {c.output_node};
-  reach[c.output_node] = true;
-  while (!stack.empty()) {
-    const size_t i = stack.back();
-    stack.pop_back();
-    for (const auto& e : c.incoming[i])
-      if (e && !reach[e->from]) reach[e->from] = true, stack.push_back(e->from);
-  }
-  for (size_t i : order)
-    if (reach[i]) c.order.push_back(i);
-  return true;
-}
-
-// ---------------------------------------------------------------- lowering
 using VReg = uint32_t;
 struct Value {
   VReg reg = 0;
@@ -159,7 +29,7 @@ struct IrInstr {
 
 class Lowering {
  public:
-  Lowering(const GraphDesc& g, const Checked& c, const std::filesystem::path& base, AssetCache& assets,
+  Lowering(const GraphDesc& g, const CheckedGraph& c, const std::filesystem::path& base, AssetCache& assets,
            std::vector<std::string>& errors)
       : g_(g), c_(c), base_(base), assets_(assets), errors_(errors) {}
 
@@ -222,7 +92,7 @@ class Lowering {
 
   static constexpr VReg kNone = UINT32_MAX;
   const GraphDesc& g_;
-  const Checked& c_;
+  const CheckedGraph& c_;
   const std::filesystem::path& base_;
   AssetCache& assets_;
   std::vector<std::string>& errors_;
@@ -242,9 +112,6 @@ class Lowering {
   VReg line_color_ = kNone, line_width_ = kNone, stroke_color_ = kNone;
   size_t run_nodes_ = 0;
 };
-
-// Node i's output `name` was lowered: record it for the nodes downstream.
-#define INKRAY_OUT(name_index, value) outputs_[{node, size_t(name_index)}] = (value)
 
 // The valued parameters of a node in list order: each one's constant, and the
 // texture a closure node's colour input holds instead of a constant, if any.
@@ -322,8 +189,9 @@ void Lowering::lower_node(size_t node) {
   const auto out_count = node_outputs(data).size();
   std::visit(
       [&]<class T>(const T& d) {
-        // The valued inputs in order, as registers.
+        // The valued inputs in order, as registers; an output socket's value, for the nodes downstream.
         const auto in = [&](size_t i) { return input(node, d, i); };
+        const auto out = [&](size_t socket, VReg reg, SocketType type) { outputs_[{node, socket}] = Value{reg, type}; };
         if constexpr (std::is_same_v<T, OutputNode>) {
           // The root is the last closure made (allocate() puts it first).
           if (auto root = closure_input(node, "surface")) {
@@ -336,9 +204,9 @@ void Lowering::lower_node(size_t node) {
             (i == 1 ? line_color_ : i == 2 ? line_width_ : stroke_color_) = r;
           }
         } else if constexpr (std::is_same_v<T, ValueNode>) {
-          INKRAY_OUT(0, (Value{constant(Vec3(d.value)), SocketType::float_value}));
+          out(0, constant(Vec3(d.value)), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, RgbNode>) {
-          INKRAY_OUT(0, (Value{constant(d.color), SocketType::color}));
+          out(0, constant(d.color), SocketType::color);
         } else if constexpr (std::is_same_v<T, ImageTextureNode>) {
           std::string error;
           auto image = assets_.image(base_ / d.path, d.srgb, &error);
@@ -353,83 +221,82 @@ void Lowering::lower_node(size_t node) {
           program_->images.push_back({std::move(image), std::move(alpha)});
           const uint32_t aux = uint32_t(program_->images.size() - 1);
           const VReg uv = in(0);
-          INKRAY_OUT(0, (Value{emit(ShaderOp::image_color, {uv}, 0, aux), SocketType::color}));
-          INKRAY_OUT(1, (Value{emit(ShaderOp::image_alpha, {uv}, 0, aux), SocketType::float_value}));
+          out(0, emit(ShaderOp::image_color, {uv}, 0, aux), SocketType::color);
+          out(1, emit(ShaderOp::image_alpha, {uv}, 0, aux), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, CheckerNode>) {
           const VReg c1 = in(0), c2 = in(1), scale = in(2), uv = in(3);
-          INKRAY_OUT(0, (Value{emit(ShaderOp::checker_color, {uv, c1, c2, scale}), SocketType::color}));
-          INKRAY_OUT(1, (Value{emit(ShaderOp::checker_fac, {uv, c1, c2, scale}), SocketType::float_value}));
+          out(0, emit(ShaderOp::checker_color, {uv, c1, c2, scale}), SocketType::color);
+          out(1, emit(ShaderOp::checker_fac, {uv, c1, c2, scale}), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, NoiseNode>) {
           const VReg scale = in(0), rough = in(1), distortion = in(2), p = in(3);
           const auto mode = uint8_t(d.noise);
           const auto oct = uint32_t(d.octaves);
-          INKRAY_OUT(0, (Value{emit(ShaderOp::noise_fac, {p, scale, rough, distortion}, mode, oct),
-                               SocketType::float_value}));
-          INKRAY_OUT(1, (Value{emit(ShaderOp::noise_color, {p, scale, rough, distortion}, mode, oct),
-                               SocketType::color}));
+          out(0, emit(ShaderOp::noise_fac, {p, scale, rough, distortion}, mode, oct),
+                               SocketType::float_value);
+          out(1, emit(ShaderOp::noise_color, {p, scale, rough, distortion}, mode, oct),
+                               SocketType::color);
         } else if constexpr (std::is_same_v<T, VoronoiNode>) {
           const VReg scale = in(0), randomness = in(1), p = in(2);
-          INKRAY_OUT(0, (Value{emit(ShaderOp::voronoi_distance, {p, scale, randomness}), SocketType::float_value}));
-          INKRAY_OUT(1, (Value{emit(ShaderOp::voronoi_color, {p, scale, randomness}), SocketType::color}));
-          INKRAY_OUT(2, (Value{emit(ShaderOp::voronoi_position, {p, scale, randomness}), SocketType::vector}));
+          out(0, emit(ShaderOp::voronoi_distance, {p, scale, randomness}), SocketType::float_value);
+          out(1, emit(ShaderOp::voronoi_color, {p, scale, randomness}), SocketType::color);
+          out(2, emit(ShaderOp::voronoi_position, {p, scale, randomness}), SocketType::vector);
         } else if constexpr (std::is_same_v<T, ColorRampNode>) {
           std::vector<RampStop> stops;
           for (const RampStopDesc& s : d.stops) stops.push_back({s.position, s.color});
           std::stable_sort(stops.begin(), stops.end(),
                            [](const RampStop& a, const RampStop& b) { return a.position < b.position; });
           program_->ramps.push_back(std::move(stops));
-          INKRAY_OUT(0, (Value{emit(ShaderOp::ramp, {in(0)}, uint8_t(d.interpolation),
+          out(0, emit(ShaderOp::ramp, {in(0)}, uint8_t(d.interpolation),
                                     uint32_t(program_->ramps.size() - 1)),
-                               SocketType::color}));
+                               SocketType::color);
         } else if constexpr (std::is_same_v<T, MathNode>) {
           VReg r = emit(ShaderOp::math, {in(0), in(1), in(2)}, uint8_t(d.operation));
           if (d.clamp_result) r = emit(ShaderOp::clamp01, {r});
-          INKRAY_OUT(0, (Value{r, SocketType::float_value}));
+          out(0, r, SocketType::float_value);
         } else if constexpr (std::is_same_v<T, MapRangeNode>) {
-          INKRAY_OUT(0, (Value{emit(ShaderOp::map_range, {in(0), in(1), in(2), in(3), in(4)},
+          out(0, emit(ShaderOp::map_range, {in(0), in(1), in(2), in(3), in(4)},
                                     uint8_t(d.clamp_result)),
-                               SocketType::float_value}));
+                               SocketType::float_value);
         } else if constexpr (std::is_same_v<T, MixColorNode>) {
           VReg r = emit(ShaderOp::mix_color, {in(0), in(1), in(2)}, uint8_t(d.blend));
           if (d.clamp_result) r = emit(ShaderOp::clamp01, {r});
-          INKRAY_OUT(0, (Value{r, SocketType::color}));
+          out(0, r, SocketType::color);
         } else if constexpr (std::is_same_v<T, VectorMathNode>) {
           const VReg a = in(0), b = in(1), s = in(2);
-          INKRAY_OUT(0, (Value{emit(ShaderOp::vector_math, {a, b, s}, uint8_t(d.operation)), SocketType::vector}));
-          INKRAY_OUT(1, (Value{emit(ShaderOp::vector_value, {a, b, s}, uint8_t(d.operation)),
-                               SocketType::float_value}));
+          out(0, emit(ShaderOp::vector_math, {a, b, s}, uint8_t(d.operation)), SocketType::vector);
+          out(1, emit(ShaderOp::vector_value, {a, b, s}, uint8_t(d.operation)),
+                               SocketType::float_value);
         } else if constexpr (std::is_same_v<T, HsvNode>) {
-          INKRAY_OUT(0, (Value{emit(ShaderOp::hsv_adjust, {in(0), in(1), in(2), in(3), in(4)}), SocketType::color}));
+          out(0, emit(ShaderOp::hsv_adjust, {in(0), in(1), in(2), in(3), in(4)}), SocketType::color);
         } else if constexpr (std::is_same_v<T, ConvertColorNode>) {
           const ShaderOp op = d.conversion == ColorConversion::rgb_to_hsv ? ShaderOp::rgb_to_hsv : ShaderOp::hsv_to_rgb;
-          INKRAY_OUT(0, (Value{emit(op, {in(0)}), SocketType::color}));
+          out(0, emit(op, {in(0)}), SocketType::color);
         } else if constexpr (std::is_same_v<T, SeparateNode>) {
           const VReg v = in(0);
-          INKRAY_OUT(0, (Value{emit(ShaderOp::separate_x, {v}), SocketType::float_value}));
-          INKRAY_OUT(1, (Value{emit(ShaderOp::separate_y, {v}), SocketType::float_value}));
-          INKRAY_OUT(2, (Value{emit(ShaderOp::separate_z, {v}), SocketType::float_value}));
+          out(0, emit(ShaderOp::separate_x, {v}), SocketType::float_value);
+          out(1, emit(ShaderOp::separate_y, {v}), SocketType::float_value);
+          out(2, emit(ShaderOp::separate_z, {v}), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, CombineNode>) {
           const VReg v = emit(ShaderOp::combine, {in(0), in(1), in(2)});
-          INKRAY_OUT(0, (Value{v, SocketType::vector}));
-          INKRAY_OUT(1, (Value{v, SocketType::color}));
+          out(0, v, SocketType::vector);
+          out(1, v, SocketType::color);
         } else if constexpr (std::is_same_v<T, GeometryNode>) {
           constexpr ShaderOp ops[] = {ShaderOp::position, ShaderOp::normal,    ShaderOp::true_normal,
                                       ShaderOp::uv,       ShaderOp::incoming,  ShaderOp::facing,
                                       ShaderOp::object_id, ShaderOp::material_id, ShaderOp::depth,
                                       ShaderOp::random};
           for (size_t k = 0; k < out_count; ++k)
-            INKRAY_OUT(k, (Value{k == 3 ? implicit(Implicit::uv) : emit(ops[k], {}), T::outputs[k].type}));
+            out(k, k == 3 ? implicit(Implicit::uv) : emit(ops[k], {}), T::outputs[k].type);
         } else if constexpr (std::is_same_v<T, LightInputNode>) {
-          program_->uses_light = true;
-          INKRAY_OUT(0, (Value{emit(ShaderOp::n_dot_l, {}), SocketType::float_value}));
-          INKRAY_OUT(1, (Value{emit(ShaderOp::shadow, {}), SocketType::float_value}));
-          INKRAY_OUT(2, (Value{emit(ShaderOp::light_color, {}), SocketType::color}));
+          out(0, emit(ShaderOp::n_dot_l, {}), SocketType::float_value);
+          out(1, emit(ShaderOp::shadow, {}), SocketType::float_value);
+          out(2, emit(ShaderOp::light_color, {}), SocketType::color);
         } else if constexpr (std::is_same_v<T, FresnelNode>) {
-          INKRAY_OUT(0, (Value{emit(ShaderOp::fresnel, {in(0)}), SocketType::float_value}));
+          out(0, emit(ShaderOp::fresnel, {in(0)}), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, LayerWeightNode>) {
           const VReg blend = in(0);
-          INKRAY_OUT(0, (Value{emit(ShaderOp::layer_weight_fresnel, {blend}), SocketType::float_value}));
-          INKRAY_OUT(1, (Value{emit(ShaderOp::layer_weight_facing, {blend}), SocketType::float_value}));
+          out(0, emit(ShaderOp::layer_weight_fresnel, {blend}), SocketType::float_value);
+          out(1, emit(ShaderOp::layer_weight_facing, {blend}), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, MixClosureNode> || std::is_same_v<T, AddClosureNode>) {
           const auto side = [&](std::string_view name) -> uint32_t {
             if (auto c = closure_input(node, name)) return *c;
@@ -470,7 +337,6 @@ void Lowering::lower_node(size_t node) {
       },
       data);
 }
-#undef INKRAY_OUT
 
 // Instructions whose inputs are all constants and that read nothing of the hit become constants.
 void Lowering::fold() {
@@ -596,6 +462,11 @@ std::shared_ptr<const ShaderProgram> Lowering::run() {
   if (errors_.size() > before) return nullptr;
   fold();
   remove_dead();
+  // Only light inputs that something still reads cost the shadow ray.
+  for (const IrInstr& ir : code_) {
+    const ShaderOp op = ir.instr.op;
+    program_->uses_light |= op == ShaderOp::n_dot_l || op == ShaderOp::shadow || op == ShaderOp::light_color;
+  }
   program_->nodes_in_graph = g_.nodes.size();
   program_->nodes_run = c_.order.size();
   return allocate();
@@ -605,7 +476,7 @@ std::shared_ptr<const ShaderProgram> Lowering::run() {
 
 std::shared_ptr<const ShaderProgram> compile_graph(const GraphDesc& graph, const std::filesystem::path& base_dir,
                                                    AssetCache& assets, std::vector<std::string>& errors) {
-  Checked checked;
+  CheckedGraph checked;
   if (!check_graph(graph, checked, errors)) return nullptr;
   if (graph.nodes.size() > 65535) {
     errors.push_back("nodes: more than 65535 nodes");
