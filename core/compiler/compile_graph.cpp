@@ -458,7 +458,14 @@ std::shared_ptr<ShaderProgram> Lowering::allocate() {
 
 std::shared_ptr<const ShaderProgram> Lowering::run() {
   const size_t before = errors_.size();
-  for (size_t node : c_.order) lower_node(node);
+  for (size_t node : c_.order) {
+    lower_node(node);
+    if (closures_.size() > kMaxClosures) {
+      errors_.push_back("the graph has more than " + std::to_string(kMaxClosures) +
+                        " closures reaching its output (simplify the graph)");
+      return nullptr;
+    }
+  }
   if (errors_.size() > before) return nullptr;
   fold();
   remove_dead();

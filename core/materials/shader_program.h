@@ -44,6 +44,7 @@ enum class ShaderVector : uint8_t { add, subtract, multiply, dot, cross, normali
 inline constexpr int kMaxShaderInputs = 5;
 inline constexpr int kMaxShaderRegisters = 256;  // 3 KB of stack per evaluation
 inline constexpr uint16_t kNoRegister = UINT16_MAX;
+inline constexpr size_t kMaxClosures = 4096;  // closure-tree nodes (indices are 16-bit)
 
 struct ShaderInstr {
   ShaderOp op;

@@ -188,6 +188,42 @@ TEST(GraphLowering, RegistersAreReusedOnceDead) {
   EXPECT_LE(c.program->register_count - int(c.program->constants.size()), 2);
 }
 
+// Checks and lowering walk graphs without recursion: a very long chain is no stack risk,
+// and a graph with more closures than the tree's indices hold is refused with a message.
+TEST(GraphLowering, HugeGraphsAreHandledOrRefusedCleanly) {
+  GraphDesc chain;
+  add(chain, "geo", GeometryNode{});
+  std::string last = "geo", output = "facing";
+  for (int i = 0; i < 20000; ++i) {
+    const std::string id = "m" + std::to_string(i);
+    add(chain, id, MathNode{MathOp::multiply, false, 0.f, 1.f, 1.f});
+    link(chain, last, output, id, "a");
+    last = id;
+    output = "value";
+  }
+  add(chain, "d", DiffuseDesc{});
+  add(chain, "out", OutputNode{});
+  link(chain, last, output, "d", "albedo");
+  link(chain, "d", "closure", "out", "surface");
+  const CompiledGraph c = compile(chain);
+  ASSERT_TRUE(c.program) << c.errors.front();
+  EXPECT_EQ(c.program->code.size(), 20001u);
+
+  GraphDesc wide;
+  add(wide, "out", OutputNode{});
+  std::string below = "leaf";
+  add(wide, below, DiffuseDesc{});
+  for (size_t i = 0; i < kMaxClosures; ++i) {
+    const std::string id = "mix" + std::to_string(i);
+    add(wide, id, MixClosureNode{});
+    link(wide, below, "closure", id, "a");
+    below = id;
+  }
+  link(wide, below, "closure", "out", "surface");
+  const std::string e = errors_of(wide);
+  EXPECT_NE(e.find("closures reaching its output"), std::string::npos) << e;
+}
+
 TEST(GraphJson, RoundTripKeepsNodesLinksAndLayout) {
   SceneDesc d = testing::one_sphere_scene(8, 8);
   GraphDesc g = toon_graph();
