@@ -16,7 +16,7 @@ std::string number_text(double x) {
   return out.str();
 }
 
-std::string value_text(const Param& p, float v) { return number_text(double(float_to_json_number(v))); }
+std::string value_text(const Param&, float v) { return number_text(double(float_to_json_number(v))); }
 std::string value_text(const Param&, int v) { return std::to_string(v); }
 std::string value_text(const Param&, bool v) { return v ? "true" : "false"; }
 std::string value_text(const Param&, const Vec3& v) {

@@ -93,6 +93,13 @@ std::string hdr_problem(const Bytes& b) {
 }  // namespace
 
 bool image_safe_to_decode(const std::filesystem::path& file, std::string* error) {
+  // Reading a folder as a stream throws in libstdc++; say what it is instead.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    *error = file.string() + ": cannot read image (" +
+             (std::filesystem::exists(file, ec) ? "not a regular file" : "file not found") + ")";
+    return false;
+  }
   std::ifstream in(file, std::ios::binary);
   const Bytes b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::string problem;

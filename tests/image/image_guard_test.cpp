@@ -98,5 +98,17 @@ TEST(ImageGuard, EveryDocumentedFormatStillLoads) {
   }
 }
 
+// A folder or a missing file is refused with its name, never an exception.
+TEST(ImageGuard, FoldersAndMissingFilesAreRefusedWithAMessage) {
+  testing::ScratchFolder dir;
+  std::string error;
+  EXPECT_FALSE(image_safe_to_decode(dir.path(), &error));
+  EXPECT_NE(error.find("not a regular file"), std::string::npos) << error;
+  RgbImage image;
+  EXPECT_FALSE(read_image(dir.path(), true, &image, &error));
+  EXPECT_FALSE(image_safe_to_decode(dir / "missing.png", &error));
+  EXPECT_NE(error.find("file not found"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace inkray
