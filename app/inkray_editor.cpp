@@ -1,10 +1,11 @@
 // inkray: the editor. GLFW window, OpenGL 3.3 core, Dear ImGui; everything
 // else is EditorApp (ui/). Headless runs for tests and measurements:
-//   inkray --screenshot OUT.png --frames N [SCENE.json]
+//   inkray --screenshot OUT.png --frames N [--node-editor MATERIAL --node-layout OUT.txt] [SCENE.json]
 //   inkray --measure-edits N [--edit KIND,...] [SCENE.json]   (edit latency, frame
 //   times and samples kept, per kind of edit)
 #include "app/edit_measurement.h"
 #include "core/image/image_io.h"
+#include "core/io/atomic_file.h"
 #include "ui/camera_controller.h"
 #include "ui/editor_app.h"
 
@@ -38,6 +39,8 @@ struct Options {
   int threads = 0;
   int width = 1600, height = 900;
   std::string select;  // object to select at start, so screenshots show the highlight
+  std::string node_material;  // material to open the node editor on
+  std::string node_layout;    // where to write the node editor's layout with the screenshot
 };
 
 void usage() {
@@ -56,7 +59,10 @@ void usage() {
       "                       (hue_jitter of the first stroke emitter), exposure (the viewport's)\n"
       "  --threads N          viewport render threads (default: all cores but one)\n"
       "  --size WxH           window size (default 1600x900)\n"
-      "  --select NAME        select the object NAME at start (for screenshots and tests)");
+      "  --select NAME        select the object NAME at start (for screenshots and tests)\n"
+      "  --node-editor NAME   select the material NAME and open the node editor on it\n"
+      "  --node-layout FILE   with --screenshot: write the node editor's node boxes and link ends\n"
+      "                       (screen pixels) to FILE");
 }
 
 bool parse(int argc, char** argv, Options* o) {
@@ -91,6 +97,10 @@ bool parse(int argc, char** argv, Options* o) {
       o->threads = std::atoi(v);
     } else if (a == "--select" && (v = value())) {
       o->select = v;
+    } else if (a == "--node-editor" && (v = value())) {
+      o->node_material = v;
+    } else if (a == "--node-layout" && (v = value())) {
+      o->node_layout = v;
     } else if (a == "--size" && (v = value())) {
       if (std::sscanf(v, "%dx%d", &o->width, &o->height) != 2) return false;
     } else if (!a.empty() && a[0] != '-' && o->scene.empty()) {
@@ -121,6 +131,13 @@ bool write_screenshot(const std::string& file, int width, int height) {
     return false;
   }
   return true;
+}
+
+bool write_text(const std::string& file, const std::string& text) {
+  std::string error;
+  if (inkray::write_file_atomically(file, text, &error)) return true;
+  std::fprintf(stderr, "inkray: %s\n", error.c_str());
+  return false;
 }
 
 }  // namespace
@@ -182,6 +199,20 @@ int main(int argc, char** argv) {
       }
     }
 
+    if (!opt.node_material.empty() && exit_code == 0) {
+      inkray::EditorState& state = app.state();
+      const auto& materials = state.document.scene().materials;
+      const auto found = std::find_if(materials.begin(), materials.end(),
+                                      [&](const inkray::MaterialDesc& m) { return m.name == opt.node_material; });
+      if (found == materials.end()) {
+        std::fprintf(stderr, "inkray: --node-editor: no material named \"%s\"\n", opt.node_material.c_str());
+        exit_code = 1;
+      } else {
+        state.selection = {inkray::ItemKind::material, int(found - materials.begin())};
+        app.show_node_editor(true);
+      }
+    }
+
     std::unique_ptr<inkray::measure::EditMeasurement> measurement;
     bool kind_skipped = false;  // a kind this scene cannot take: measure the rest, then fail
     if (opt.measure_edits > 0 && exit_code == 0) {
@@ -233,6 +264,7 @@ int main(int argc, char** argv) {
                     int(v.image_h));
         std::printf("viewport spp: %u\n", app.viewport().shown_spp());
         exit_code = write_screenshot(opt.screenshot, w, h) ? 0 : 1;
+        if (!opt.node_layout.empty() && !write_text(opt.node_layout, app.node_editor().layout())) exit_code = 1;
         break;
       }
       if (measurement && !measurement->step(app, work_ms)) {

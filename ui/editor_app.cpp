@@ -20,6 +20,9 @@ namespace {
 constexpr float kSideWidth = 300.f;
 constexpr float kPropertiesWidth = 380.f;
 constexpr float kBottomHeight = 250.f;
+// The viewport's share of the height when the node editor is open: at 1600 x 900 the
+// example graphs (about 490 units tall) then fit the canvas at zoom 1, where text is sharp.
+constexpr float kNodeSplit = 0.4f;
 constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
     ImGuiWindowFlags_NoBringToFrontOnFocus;
@@ -41,9 +44,11 @@ EditorApp::EditorApp(EditorOptions options)
     : options_(std::move(options)),
       renderer_(viewport_threads(options_.threads)),
       viewport_(std::make_unique<ViewportPanel>()),
+      swatches_(std::make_unique<MaterialSwatches>()),
       recent_(editor_config_dir() / "recent.txt"),
       autosave_(editor_config_dir() / "recovery.json", options_.autosave_interval) {
   recent_.load();
+  state_.swatches = swatches_.get();
   state_.home_camera = state_.document.scene().camera;
   if (options_.offer_recovery) {
     std::vector<std::string> errors;
@@ -200,6 +205,7 @@ void EditorApp::menu_bar() {
   }
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Frame selected", "F")) state_.want_frame_selected = true;
+    ImGui::MenuItem("Node editor", nullptr, &show_node_editor_);
     if (ImGui::MenuItem("Reset camera")) {
       SceneDesc s = state_.document.scene();
       s.camera = state_.home_camera;
@@ -213,13 +219,15 @@ void EditorApp::menu_bar() {
 void EditorApp::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput || file_dialog_.is_open()) return;
+  // With the node canvas focused, Delete and duplicate act on its nodes, not on the scene.
+  const bool nodes_have_keys = show_node_editor_ && node_editor_.focused();
   if (io.KeyCtrl) {
     if (ImGui::IsKeyPressed('N', false)) guarded(Pending::new_document);
     if (ImGui::IsKeyPressed('O', false)) guarded(Pending::open_dialog);
     if (ImGui::IsKeyPressed('S', false)) save(io.KeyShift);
     if (ImGui::IsKeyPressed('Z', false)) io.KeyShift ? state_.document.redo() : state_.document.undo();
     if (ImGui::IsKeyPressed('Y', false)) state_.document.redo();
-    if (ImGui::IsKeyPressed('D', false)) {
+    if (ImGui::IsKeyPressed('D', false) && !nodes_have_keys) {
       SceneDesc s = state_.document.scene();
       const Selection copy = duplicate_item(s, state_.selection);
       if (copy.kind != ItemKind::none) {
@@ -227,7 +235,7 @@ void EditorApp::shortcuts() {
         state_.selection = copy;
       }
     }
-  } else if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false)) {
+  } else if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false) && !nodes_have_keys) {
     SceneDesc s = state_.document.scene();
     if (delete_item(s, state_.selection)) {
       state_.edit(std::move(s), "Delete");
@@ -240,10 +248,16 @@ void EditorApp::layout(float width, float height) {
   const float top = ImGui::GetFrameHeight();  // the menu bar
   const float body = height - top;
   const float centre_w = std::max(width - kSideWidth - kPropertiesWidth, 200.f);
-  const float viewport_h = std::max(body - kBottomHeight, 150.f);
+  // With the node editor open, it spans the scene and viewport columns below them, and
+  // the output tabs move under the properties: nodes need width more than the log does.
+  const bool nodes = show_node_editor_;
+  const float viewport_h =
+      nodes ? std::max(std::floor(body * kNodeSplit), 150.f) : std::max(body - kBottomHeight, 150.f);
+  const float right_x = kSideWidth + centre_w;
+  const float properties_h = nodes ? std::max(body - kBottomHeight, 150.f) : body;
 
   ImGui::SetNextWindowPos(ImVec2(0, top));
-  ImGui::SetNextWindowSize(ImVec2(kSideWidth, body));
+  ImGui::SetNextWindowSize(ImVec2(kSideWidth, nodes ? viewport_h : body));
   if (ImGui::Begin("Scene", nullptr, kPanelFlags)) draw_scene_graph_panel(state_);
   ImGui::End();
 
@@ -256,8 +270,27 @@ void EditorApp::layout(float width, float height) {
   ImGui::End();
   ImGui::PopStyleVar();
 
-  ImGui::SetNextWindowPos(ImVec2(kSideWidth, top + viewport_h));
-  ImGui::SetNextWindowSize(ImVec2(centre_w, body - viewport_h));
+  if (nodes) {
+    ImGui::SetNextWindowPos(ImVec2(0, top + viewport_h));
+    ImGui::SetNextWindowSize(ImVec2(right_x, body - viewport_h));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 3));
+    // No title bar: the panel's first row is its title, and the canvas gets the height.
+    if (ImGui::Begin("Node editor", nullptr,
+                     kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                         ImGuiWindowFlags_NoScrollWithMouse)) {
+      node_editor_.draw(state_, &show_node_editor_);
+    }
+    ImGui::End();
+    ImGui::PopStyleVar();
+  }
+
+  if (nodes) {
+    ImGui::SetNextWindowPos(ImVec2(right_x, top + properties_h));
+    ImGui::SetNextWindowSize(ImVec2(kPropertiesWidth, body - properties_h));
+  } else {
+    ImGui::SetNextWindowPos(ImVec2(kSideWidth, top + viewport_h));
+    ImGui::SetNextWindowSize(ImVec2(centre_w, body - viewport_h));
+  }
   if (ImGui::Begin("Output", nullptr, kPanelFlags)) {
     if (ImGui::BeginTabBar("bottom_tabs")) {
       if (ImGui::BeginTabItem("Render")) {
@@ -273,8 +306,8 @@ void EditorApp::layout(float width, float height) {
   }
   ImGui::End();
 
-  ImGui::SetNextWindowPos(ImVec2(kSideWidth + centre_w, top));
-  ImGui::SetNextWindowSize(ImVec2(kPropertiesWidth, body));
+  ImGui::SetNextWindowPos(ImVec2(right_x, top));
+  ImGui::SetNextWindowSize(ImVec2(kPropertiesWidth, properties_h));
   if (ImGui::Begin("Properties", nullptr, kPanelFlags)) draw_properties_panel(state_);
   ImGui::End();
 }
@@ -392,6 +425,11 @@ void EditorApp::sync_renderer() {
     submitted_render_revision_ = renderer_.submit(state_.document.scene());
     submit_times_[submitted_render_revision_] = std::chrono::steady_clock::now();
   }
+  // Swatches wait while the viewport catches up with an edit: its first pixels come first.
+  const auto shown = renderer_.latest();
+  const bool viewport_catching_up =
+      !shown || shown->revision != submitted_render_revision_ || shown->divisor > 1;
+  swatches_->update(state_.document.scene(), viewport_catching_up);
   first_sync_ = false;
 }
 
@@ -442,6 +480,7 @@ void EditorApp::frame(float window_width, float window_height) {
         state_.document.scene().base_dir.empty() ? std::filesystem::current_path() : state_.document.scene().base_dir;
     file_dialog_.open("Add mesh", FileDialog::Mode::open, {".obj"}, start);
   }
+  if (state_.want_node_editor) state_.want_node_editor = false, show_node_editor_ = true;
   if (state_.want_export) {
     state_.want_export = false;
     if (!state_.export_job) start_export();

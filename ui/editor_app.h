@@ -7,6 +7,8 @@
 #include "ui/autosave.h"
 #include "ui/editor_state.h"
 #include "ui/file_dialog.h"
+#include "ui/material_swatches.h"
+#include "ui/node_editor_panel.h"
 #include "ui/recent_files.h"
 #include "ui/scene_loader.h"
 #include "ui/viewport_panel.h"
@@ -43,6 +45,9 @@ class EditorApp {
   }
 
   EditorState& state() { return state_; }
+  // View > Node editor: the selected material's nodes below the viewport.
+  void show_node_editor(bool show) { show_node_editor_ = show; }
+  const NodeEditorPanel& node_editor() const { return node_editor_; }
   const ViewportPanel& viewport() const { return *viewport_; }
   const ViewportFrame& viewport_frame() const { return viewport_frame_; }
   ProgressiveRenderer& renderer() { return renderer_; }
@@ -78,6 +83,9 @@ class EditorApp {
   ProgressiveRenderer renderer_;
   std::unique_ptr<ViewportPanel> viewport_;
   ViewportFrame viewport_frame_;
+  NodeEditorPanel node_editor_;
+  std::unique_ptr<MaterialSwatches> swatches_;
+  bool show_node_editor_ = false;
   FileDialog file_dialog_;
   enum class DialogPurpose { open, save_as, add_mesh } dialog_purpose_ = DialogPurpose::open;
   RecentFiles recent_;

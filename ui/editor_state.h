@@ -13,6 +13,8 @@
 
 namespace inkray {
 
+class MaterialSwatches;  // ui/material_swatches.h: needs GL, so the app owns it
+
 struct ExportSettings {
   std::string output = "render.png";
   int spp = 256;
@@ -35,12 +37,14 @@ struct EditorState {
   // the viewport until a document that renders replaces it.
   std::vector<std::string> render_problems;
   ExportSettings export_settings;
+  MaterialSwatches* swatches = nullptr;  // the app's material previews; null without a GL context (tests)
   std::unique_ptr<ExportJob> export_job;
 
   // Requests to the app shell, which owns dialogs and the renderer.
   bool want_frame_selected = false;
   bool want_add_mesh = false;
   bool want_export = false;
+  bool want_node_editor = false;  // the properties panel's "Edit nodes"
 
   // Edits go through the document so they can be undone.
   void edit(SceneDesc after, std::string label, std::string merge_key = {}) {

@@ -1,3 +1,4 @@
+#include "core/document/graph_edit.h"
 #include "ui/properties_panel.h"
 
 #include "ui/param_widgets.h"
@@ -5,7 +6,10 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace inkray {
 namespace {
@@ -38,6 +42,85 @@ void commit_named(EditorState& state, const Selection& sel, std::vector<T> Scene
   }
   (scene.*list)[size_t(sel.index)] = std::move(edited);
   state.edit(std::move(scene), "Edit " + param, merge_key(sel, param));
+}
+
+// Generated widgets, except that names referring to other items (a mix's materials,
+// an emitter's object) are combos of the names that exist rather than typed text.
+using References = std::vector<std::pair<std::string_view, std::vector<std::string>>>;  // parameter -> names
+
+struct ReferenceWidgets {
+  References references;
+  ParamWidgets widgets;
+
+  template <class F>
+  void operator()(const Param& p, F& value) {
+    widgets(p, value);
+  }
+  void operator()(const Param& p, std::string& value) {
+    const auto it =
+        std::find_if(references.begin(), references.end(), [&](const auto& r) { return r.first == p.name; });
+    if (it == references.end()) return widgets(p, value);
+    const std::string label(p.name);
+    if (ImGui::BeginCombo(label.c_str(), value.empty() ? "(none)" : value.c_str())) {
+      for (const std::string& name : it->second) {
+        if (ImGui::Selectable(name.c_str(), name == value) && name != value) {
+          value = name;
+          widgets.changed = true;
+          widgets.changed_param = label;
+        }
+      }
+      ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered() && !p.doc.empty()) ImGui::SetTooltip("%.*s", int(p.doc.size()), p.doc.data());
+  }
+};
+
+template <class Desc>
+bool edit_with_references(Desc& desc, References references, std::string* param) {
+  ReferenceWidgets widgets;
+  widgets.references = std::move(references);
+  visit_params(desc, widgets);
+  if (widgets.widgets.changed) *param = widgets.widgets.changed_param;
+  return widgets.widgets.changed;
+}
+
+template <class T>
+std::vector<std::string> names_of(const std::vector<T>& items, std::string_view except = {}) {
+  std::vector<std::string> names;
+  for (const T& item : items)
+    if (item.name != except) names.push_back(item.name);
+  return names;
+}
+
+bool edit_emitter(const SceneDesc& scene, StrokeEmitterDesc& emitter, std::string* param) {
+  return edit_with_references(emitter, {{"object", names_of(scene.objects)}}, param);
+}
+
+// The material's type and settings; a graph's nodes are the node editor's.
+bool edit_material_data(EditorState& state, MaterialDesc& m, std::string* param) {
+  const MaterialVariant before = m.data;
+  bool changed = edit_variant_type("type", m.data);
+  if (changed) *param = "type";
+  // Turning a material into a graph keeps its look: it becomes that material's closure node.
+  if (changed && std::holds_alternative<GraphDesc>(m.data)) m.data = graph_from_material(before);
+  const SceneDesc& scene = state.document.scene();
+  std::visit(
+      [&]<class T>(T& data) {
+        if constexpr (std::is_same_v<T, GraphDesc>) {
+          ImGui::TextDisabled("%zu nodes, %zu links", data.nodes.size(), data.links.size());
+        } else if constexpr (std::is_same_v<T, MixDesc>) {
+          // A mix of itself would be a cycle.
+          const std::vector<std::string> others = names_of(scene.materials, m.name);
+          changed |= edit_with_references(data, {{"a", others}, {"b", others}}, param);
+        } else {
+          changed |= edit_params(data, param);
+        }
+      },
+      m.data);
+  if (ImGui::Button("Edit nodes")) state.want_node_editor = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Open the node editor on this material (a plain one becomes a graph at the first edit)");
+  return changed;
 }
 
 bool edit_transform(TransformDesc& t, std::string* param) {
@@ -87,7 +170,7 @@ void material_section(EditorState& state, int index) {
   ParamWidgets name_widget;
   name_widget(text("name", "Unique material name"), m.name);
   if (name_widget.changed) changed = true, param = "name";
-  changed |= edit_tagged("type", m.data, &param);
+  changed |= edit_material_data(state, m, &param);
   if (ImGui::TreeNode("outline overrides")) {
     changed |= edit_params(m.lines, &param);
     ImGui::TreePop();
@@ -133,7 +216,7 @@ void object_section(EditorState& state, int index) {
     section_title(("Strokes: " + scene.strokes[size_t(e)].name).c_str());
     StrokeEmitterDesc emitter = scene.strokes[size_t(e)];
     std::string emitter_param;
-    if (edit_params(emitter, &emitter_param)) {
+    if (edit_emitter(scene, emitter, &emitter_param)) {
       commit_named(state, {ItemKind::emitter, e}, &SceneDesc::strokes, std::move(emitter), emitter_param);
       ImGui::PopID();
       return;
@@ -193,7 +276,7 @@ void draw_properties_panel(EditorState& state) {
     case ItemKind::emitter: {
       StrokeEmitterDesc emitter = scene.strokes[size_t(sel.index)];
       std::string param;
-      if (edit_params(emitter, &param)) commit_named(state, sel, &SceneDesc::strokes, std::move(emitter), param);
+      if (edit_emitter(scene, emitter, &param)) commit_named(state, sel, &SceneDesc::strokes, std::move(emitter), param);
       break;
     }
     case ItemKind::none: break;

@@ -1,5 +1,6 @@
 #include "ui/scene_graph_panel.h"
 
+#include "ui/material_swatches.h"
 #include "ui/scene_edits.h"
 
 #include <imgui.h>
@@ -17,6 +18,15 @@ void apply_structural(EditorState& state, const char* label, const auto& change)
 
 void item_row(EditorState& state, const Selection& item, const std::string& name, bool hidden = false) {
   ImGui::PushID(int(item.kind) * 100000 + item.index);
+  if (item.kind == ItemKind::material && state.swatches) {
+    // The material's swatch, as the node editor's output shows it.
+    const float side = ImGui::GetTextLineHeight();
+    if (const ImTextureID swatch = state.swatches->texture(name))
+      ImGui::Image(swatch, ImVec2(side, side));
+    else
+      ImGui::Dummy(ImVec2(side, side));
+    ImGui::SameLine();
+  }
   if (hidden) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   if (ImGui::Selectable(name.c_str(), state.selection == item)) state.selection = item;
   if (hidden) ImGui::PopStyleColor();

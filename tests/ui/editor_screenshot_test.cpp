@@ -2,6 +2,8 @@
 // the viewport, matching a headless render of the same scene block by block.
 #include "core/image/image_io.h"
 
+#include "tests/support/file_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -14,16 +16,8 @@
 namespace inkray {
 namespace {
 
-std::string run(const std::string& cmd, int* exit_code) {
-  std::string out;
-  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
-  if (!pipe) return out;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  *exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
-}
+using testing::run_command;
+
 
 // Mean display value (sRGB-encoded luminance-like average of r, g, b) of a rectangle.
 float block_mean(const RgbImage& img, float x0, float y0, float x1, float y1) {
@@ -42,7 +36,7 @@ float block_mean(const RgbImage& img, float x0, float y0, float x1, float y1) {
 
 TEST(EditorScreenshot, ViewportShowsTheRenderedScene) {
   int code = 0;
-  run("command -v xvfb-run", &code);
+  run_command("command -v xvfb-run", &code);
   if (code != 0) GTEST_SKIP() << "xvfb-run is not installed";
   const std::string bin = std::string(INKRAY_BINARY_DIR) + "/bin/";
   if (!std::filesystem::exists(bin + "inkray")) GTEST_SKIP() << "the editor was not built";
@@ -52,7 +46,7 @@ TEST(EditorScreenshot, ViewportShowsTheRenderedScene) {
   const std::string scene = std::string(INKRAY_SOURCE_DIR) + "/scenes/cornell.json";
 
   const std::string shot = (dir / "editor.png").string();
-  const std::string out = run("INKRAY_CONFIG_DIR=" + dir.string() + " xvfb-run -a -s '-screen 0 1600x900x24' " + bin +
+  const std::string out = run_command("INKRAY_CONFIG_DIR=" + dir.string() + " xvfb-run -a -s '-screen 0 1600x900x24' " + bin +
                                   "inkray --screenshot " + shot + " --frames 10 " + scene,
                               &code);
   ASSERT_EQ(code, 0) << out;
@@ -64,7 +58,7 @@ TEST(EditorScreenshot, ViewportShowsTheRenderedScene) {
   ASSERT_GT(vh, 100);
 
   const std::string ref = (dir / "ref.png").string();
-  const std::string ref_out = run(bin + "inkray-render " + scene + " -o " + ref + " --spp 16", &code);
+  const std::string ref_out = run_command(bin + "inkray-render " + scene + " -o " + ref + " --spp 16", &code);
   ASSERT_EQ(code, 0) << ref_out;
 
   RgbImage editor, reference;
