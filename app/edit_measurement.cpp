@@ -103,6 +103,13 @@ float& intensity(LightVariant& light) {
   return std::visit([](auto& d) -> float& { return d.intensity; }, light);
 }
 
+int first_used_graph(const SceneDesc& s) {
+  for (const ObjectDesc& o : s.objects)
+    for (size_t m = 0; m < s.materials.size(); ++m)
+      if (s.materials[m].name == o.material && std::holds_alternative<GraphDesc>(s.materials[m].data)) return int(m);
+  return -1;
+}
+
 int first_used_material(const SceneDesc& s) {
   for (const ObjectDesc& o : s.objects) {
     for (size_t m = 0; m < s.materials.size(); ++m) {
@@ -128,6 +135,12 @@ SceneDesc edited(EditKind kind, int step, const SceneDesc& base, SceneDesc s) {
     case EditKind::camera:
       s.camera = orbit(s.camera, 0.02f, 0.f);
       break;
+    case EditKind::node: {
+      const size_t m = size_t(first_used_graph(base));
+      s.materials[m].data = base.materials[m].data;
+      nudge(s.materials[m].data, step);
+      break;
+    }
     case EditKind::material: {
       const size_t m = size_t(first_used_material(base));
       s.materials[m].data = base.materials[m].data;
@@ -201,6 +214,8 @@ std::string unavailable(EditKind kind, const SceneDesc& s) {
   switch (kind) {
     case EditKind::material:
       return first_used_material(s) < 0 ? "no object has a material to edit" : "";
+    case EditKind::node:
+      return first_used_graph(s) < 0 ? "no object has a material graph to edit" : "";
     case EditKind::light:
       return s.lights.empty() && first_emissive(s) < 0 ? "no light and no emissive material to edit" : "";
     case EditKind::transform:

@@ -18,9 +18,10 @@ namespace inkray::measure {
 using Clock = std::chrono::steady_clock;
 
 // What --measure-edits changes: each a small step, as one frame of a slider drag makes.
-enum class EditKind { camera, material, light, transform, line_colour, stroke_parameter, exposure };
-constexpr std::array<std::string_view, 7> kEditKindNames = {
-    "camera", "material", "light", "transform", "line-colour", "stroke-parameter", "exposure"};
+// `node` is a value on a node of the first material graph an object uses.
+enum class EditKind { camera, material, node, light, transform, line_colour, stroke_parameter, exposure };
+constexpr std::array<std::string_view, 8> kEditKindNames = {
+    "camera", "material", "node", "light", "transform", "line-colour", "stroke-parameter", "exposure"};
 
 // "camera, material, ...", for help and error messages.
 std::string edit_kind_list();

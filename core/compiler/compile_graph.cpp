@@ -404,7 +404,7 @@ std::shared_ptr<ShaderProgram> Lowering::allocate() {
   for (VReg r = 0; r < n; ++r) {
     if (!is_constant_[r] || !used[r]) continue;
     phys[r] = uint16_t(p.constants.size());
-    p.constants.push_back({value_[r].x, value_[r].y, value_[r].z});
+    p.constants.push_back(value_[r]);
   }
   const size_t first_temp = p.constants.size();
   std::vector<uint16_t> free_regs;
@@ -434,8 +434,25 @@ std::shared_ptr<ShaderProgram> Lowering::allocate() {
     return nullptr;
   }
   for (size_t l = 0; l < leaves_.size(); ++l) {
-    leaves_[l].inputs.clear();
-    for (VReg r : leaf_inputs_[l]) leaves_[l].inputs.push_back(phys[r]);
+    ClosureLeaf& leaf = leaves_[l];
+    leaf.inputs.clear();
+    leaf.constant = true;
+    for (VReg r : leaf_inputs_[l]) {
+      leaf.inputs.push_back(phys[r]);
+      leaf.constant = leaf.constant && is_constant_[r];
+    }
+    // Known now: set once here rather than per hit.
+    if (leaf.constant) {
+      Material filled;
+      materialise(leaf, p.constants.data(), filled);
+      leaf.tmpl = std::move(filled);
+    }
+    std::visit(
+        [&]<class M>(const M&) {
+          p.lines_pass_through |= std::is_same_v<M, ConductorMaterial> || std::is_same_v<M, DielectricMaterial> ||
+                                  std::is_same_v<M, TransparentMaterial>;
+        },
+        leaf.tmpl);
   }
   // The root is the last closure made; reversing puts it first and children after parents.
   const size_t count = closures_.size();

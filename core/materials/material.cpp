@@ -37,11 +37,7 @@ ResolvedMaterial resolve_material(std::span<const Material> materials, uint32_t 
   // Acyclic mixes reach a non-mix in fewer steps than there are materials.
   for (size_t steps = 0; steps <= materials.size() && index < materials.size(); ++steps) {
     const Material& m = materials[index];
-    if (const auto* graph = std::get_if<GraphMaterial>(&m)) {
-      ShaderRegisters registers;
-      run_shader(*graph->program, sp, registers);
-      return pick_closure(*graph->program, registers, u, scratch);
-    }
+    if (const auto* graph = std::get_if<GraphMaterial>(&m)) return run_graph(*graph->program, sp, u, scratch);
     if (!material_flags(m).resolves) return {&m, 1.f};
     const MixMaterial& mix = std::get<MixMaterial>(m);
     float p = glm::clamp(luminance(texture_eval(mix.factor, sp.si->uv)), 0.f, 1.f);

@@ -63,6 +63,7 @@ using Material = std::variant<DiffuseMaterial, ConductorMaterial, DielectricMate
 struct ClosureLeaf {
   Material tmpl;
   std::vector<uint16_t> inputs;
+  bool constant = false;  // every input is a constant: tmpl already holds them and is used as it is
 };
 
 // What a kind of material promises, decided once per alternative.

@@ -178,10 +178,7 @@ Vec3 eval_instr(const ShaderProgram& program, const ShaderInstr& instr, const Ve
 }
 
 void run_shader(const ShaderProgram& program, const ShadingPoint& sp, ShaderRegisters& registers) {
-  for (size_t i = 0; i < program.constants.size(); ++i) {
-    const auto& c = program.constants[i];
-    registers[i] = Vec3(c[0], c[1], c[2]);
-  }
+  std::copy(program.constants.begin(), program.constants.end(), registers.begin());
   for (const ShaderInstr& instr : program.code) {
     const Vec3 v = eval_instr(program, instr, registers.data(), sp);
     // Non-finite values (a division by a tiny number, a huge power) become 0 rather than NaN pixels.
@@ -190,11 +187,8 @@ void run_shader(const ShaderProgram& program, const ShadingPoint& sp, ShaderRegi
   }
 }
 
-namespace {
-
-// Copies the leaf's template into scratch and sets its valued inputs from the registers,
-// in the order compile_graph stored them (the description's parameter order).
-void materialise(const ClosureLeaf& leaf, const ShaderRegisters& r, Material& scratch) {
+// The valued inputs are in the order compile_graph stored them (the description's parameter order).
+void materialise(const ClosureLeaf& leaf, const Vec3* r, Material& scratch) {
   const auto reg = [&](size_t i) -> const Vec3& { return r[leaf.inputs[i]]; };
   const auto num = [&](size_t i, float lo, float hi) { return std::clamp(r[leaf.inputs[i]].x, lo, hi); };
   scratch = leaf.tmpl;
@@ -236,19 +230,27 @@ void materialise(const ClosureLeaf& leaf, const ShaderRegisters& r, Material& sc
              scratch);
 }
 
-}  // namespace
+ResolvedMaterial run_graph(const ShaderProgram& program, const ShadingPoint& sp, float u, Material& scratch) {
+  // A graph with no instruction left (all folded) reads its constants where they are.
+  if (program.code.empty()) return pick_closure(program, program.constants.data(), u, scratch);
+  ShaderRegisters registers;
+  run_shader(program, sp, registers);
+  return pick_closure(program, registers, u, scratch);
+}
 
-ResolvedMaterial pick_closure(const ShaderProgram& program, const ShaderRegisters& registers, float u,
-                              Material& scratch) {
+ResolvedMaterial pick_closure(const ShaderProgram& program, const Vec3* registers, float u, Material& scratch) {
   if (program.closures.empty()) return {};
   float weight = 1.f;
   const ClosureNode* node = &program.closures[0];
   // Children have larger indices than their parents, so the walk ends.
   for (size_t steps = 0; steps < program.closures.size(); ++steps) {
     switch (node->kind) {
-      case ClosureNode::Kind::leaf:
-        materialise(program.leaves[node->leaf], registers, scratch);
+      case ClosureNode::Kind::leaf: {
+        const ClosureLeaf& leaf = program.leaves[node->leaf];
+        if (leaf.constant) return {&leaf.tmpl, weight};
+        materialise(leaf, registers, scratch);
         return {&scratch, weight};
+      }
       case ClosureNode::Kind::mix: {
         const float p = std::clamp(registers[node->fac].x, 0.f, 1.f);
         if (u < p) {

@@ -20,10 +20,19 @@ bool instr_is_pure(ShaderOp op);
 
 // Fills the registers: constants, then every instruction in order.
 void run_shader(const ShaderProgram& program, const ShadingPoint& sp, ShaderRegisters& registers);
-// Walks the closure tree with u (rescaled at each choice) and writes the chosen
-// surface, its inputs taken from the registers, to `scratch`.
-ResolvedMaterial pick_closure(const ShaderProgram& program, const ShaderRegisters& registers, float u,
-                              Material& scratch);
+// Walks the closure tree with u (rescaled at each choice) and returns the chosen
+// surface: a constant leaf's template itself, else the template written to
+// `scratch` with its inputs taken from the registers.
+ResolvedMaterial pick_closure(const ShaderProgram& program, const Vec3* registers, float u, Material& scratch);
+inline ResolvedMaterial pick_closure(const ShaderProgram& program, const ShaderRegisters& registers, float u,
+                                     Material& scratch) {
+  return pick_closure(program, registers.data(), u, scratch);
+}
+// Copies the leaf's template into `out` and sets its inputs from the registers (the
+// compiler uses it to fill constant leaves).
+void materialise(const ClosureLeaf& leaf, const Vec3* registers, Material& out);
+// Runs the program if it has code and picks the closure: what resolve_material does for a graph.
+ResolvedMaterial run_graph(const ShaderProgram& program, const ShadingPoint& sp, float u, Material& scratch);
 // The output node's line and stroke overrides at a hit.
 SurfaceOverrides shader_overrides(const ShaderProgram& program, const ShadingPoint& sp);
 

@@ -68,7 +68,7 @@ struct ImageChannels {
 };
 
 struct ShaderProgram {
-  std::vector<std::array<float, 3>> constants;  // registers [0, constants.size()) start with these
+  std::vector<Vec3> constants;  // registers [0, constants.size()) start with these
   std::vector<ShaderInstr> code;
   int register_count = 0;
   std::vector<ClosureLeaf> leaves;
@@ -79,6 +79,9 @@ struct ShaderProgram {
   uint16_t line_width = kNoRegister;
   uint16_t stroke_color = kNoRegister;
   bool uses_light = false;  // the light inputs must be gathered before running
+  // Some surface may let outline-finding rays through (a mirror, glass, transparency):
+  // without one, outlines see the graph's surface without running it.
+  bool lines_pass_through = false;
   size_t nodes_in_graph = 0, nodes_run = 0;  // for tests and the compile bench: pruning and folding
 };
 

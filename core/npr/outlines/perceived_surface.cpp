@@ -66,7 +66,9 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     sp.depth = out.distance + length;
     sp.object_id = object.source;
     sp.material_id = index;
-    if (material_flags(*material).resolves) {
+    const auto* graph = std::get_if<GraphMaterial>(material);
+    // A graph whose surfaces are all opaque to lines is what is seen, whatever it computes.
+    if (material_flags(*material).resolves && !(graph && !graph->program->lines_pass_through)) {
       // Lines do not gather light: a graph reading it sees a fully lit surface.
       material = resolve_material(scene.materials, index, sp, u_mix, scratch).material;
       if (!material) return out;
