@@ -14,7 +14,8 @@
 
 namespace inkray {
 
-// Far deeper than any scene needs (the deepest value, a texture's colour, is at depth 5).
+// Far deeper than any scene needs (the deepest value, a colour of a ramp stop on a
+// material graph's node, is at depth 8).
 inline constexpr std::size_t kMaxJsonDepth = 64;
 
 // The document, or nullopt after an error that stops parsing (logged). Duplicate keys
