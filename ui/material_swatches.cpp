@@ -71,8 +71,11 @@ void MaterialSwatches::update(const SceneDesc& doc, bool hold) {
         }
       }
     }
-    // A material that cannot compile has no swatch; the viewport reports why. Move on.
-    if (!renderer_.take_messages().empty() && !rendering_.empty() && (!snapshot || snapshot->revision != revision_)) {
+    // A material that cannot compile never shows an image (the viewport's log says why;
+    // a broken graph compiles to its stand-in and does). Move on after a while.
+    renderer_.take_messages();
+    const bool gave_up = std::chrono::steady_clock::now() - submitted_at_ > std::chrono::seconds(10);
+    if (!rendering_.empty() && gave_up && (!snapshot || snapshot->revision != revision_)) {
       if (names.count(rendering_)) swatches_[rendering_].key = rendering_key_;
       rendering_.clear();
       searched_doc_.reset();
@@ -107,6 +110,7 @@ void MaterialSwatches::update(const SceneDesc& doc, bool hold) {
   rendering_ = next;
   rendering_key_ = next_key;
   revision_ = renderer_.submit(material_preview_scene(doc, next, kSize, kSpp));
+  submitted_at_ = std::chrono::steady_clock::now();
 }
 
 ImTextureID MaterialSwatches::texture(const std::string& material) const {

@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -48,6 +49,7 @@ class MaterialSwatches {
   std::string rendering_;      // the material in flight, empty when idle
   std::string rendering_key_;  // and the preview scene it was given
   uint64_t revision_ = 0;
+  std::chrono::steady_clock::time_point submitted_at_;
   uint64_t uploaded_generation_ = 0;
   bool held_ = false;
   std::string wanted_;

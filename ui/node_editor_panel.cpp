@@ -2,6 +2,7 @@
 // keys, and the edits they commit. Drawing is node_drawing.cpp's.
 #include "ui/node_editor_panel.h"
 
+#include "core/compiler/graph_checks.h"
 #include "core/document/graph_edit.h"
 #include "ui/material_swatches.h"
 #include "ui/node_add_menu.h"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace inkray {
 namespace {
@@ -139,10 +141,16 @@ void NodeEditorPanel::header(EditorState& state, bool* open) {
     } else {
       ImGui::TextDisabled("(graph, %zu nodes)", graph_.nodes.size());
     }
-    if (broken_links_ > 0) {
+    if (!problems_.empty()) {
+      // The graph's checks (the same the compiler runs), so a broken graph says why where it is edited.
       ImGui::SameLine();
-      ImGui::TextColored(ImVec4(1.f, 0.45f, 0.45f, 1.f), "%d links join no sockets (see the log)",
-                         broken_links_);
+      ImGui::TextColored(ImVec4(1.f, 0.45f, 0.45f, 1.f), "%zu problem%s", problems_.size(),
+                         problems_.size() == 1 ? "" : "s");
+      if (ImGui::IsItemHovered()) {
+        std::string all;
+        for (const std::string& p : problems_) all += p + "\n";
+        ImGui::SetTooltip("%s", all.c_str());
+      }
     }
     ImGui::SameLine();
     if (ImGui::SmallButton("Add node"))
@@ -162,6 +170,37 @@ void NodeEditorPanel::header(EditorState& state, bool* open) {
   }
   ImGui::SameLine(close_x);
   if (ImGui::SmallButton("x")) *open = false;
+}
+
+// Runs the compiler's graph checks when the graph changed; nodes they name are outlined in red.
+void NodeEditorPanel::check(const GraphDesc& graph) {
+  if (checked_graph_ && *checked_graph_ == graph) return;
+  checked_graph_ = graph;
+  problems_.clear();
+  problem_nodes_.clear();
+  CheckedGraph unused;
+  if (is_graph_) check_graph(graph, unused, problems_);
+  for (const std::string& p : problems_) {
+    // A message about a link starts "links[k]": both its ends are outlined.
+    if (p.rfind("links[", 0) == 0) {
+      const size_t k = size_t(std::strtoul(p.c_str() + 6, nullptr, 10));
+      if (k < graph.links.size()) problem_nodes_.insert({graph.links[k].from, graph.links[k].to});
+    }
+    // Any node a message names as "nodes[i]".
+    for (size_t at = p.find("nodes["); at != std::string::npos; at = p.find("nodes[", at + 1)) {
+      const size_t index = size_t(std::strtoul(p.c_str() + at + 6, nullptr, 10));
+      if (index < graph.nodes.size()) problem_nodes_.insert(graph.nodes[index].id);
+    }
+  }
+}
+
+void NodeEditorPanel::draw_problem_outlines(const std::vector<NodeBox>& boxes) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (const NodeBox& box : boxes) {
+    if (!problem_nodes_.count(box.id)) continue;
+    const Vec2 a = to_screen(view_, box.rect.min - Vec2(3.f)), b = to_screen(view_, box.rect.max + Vec2(3.f));
+    draw->AddRect(ImVec2(a.x, a.y), ImVec2(b.x, b.y), IM_COL32(255, 70, 70, 255), 6.f * view_.zoom, 0, 3.f);
+  }
 }
 
 // The material's preview swatch, hanging under the output node.
@@ -216,15 +255,11 @@ void NodeEditorPanel::draw_canvas(EditorState& state) {
 
   curves_.clear();
   curve_link_.clear();
-  broken_links_ = 0;
   for (size_t k = 0; k < graph_.links.size(); ++k) {
     const GraphLinkDesc& l = graph_.links[k];
     const PinBox* from = find_pin(boxes, l.from, l.output, true);
     const PinBox* to = find_pin(boxes, l.to, l.input, false);
-    if (!from || !to) {
-      ++broken_links_;  // the compiler's messages in the log name it
-      continue;
-    }
+    if (!from || !to) continue;  // a link to a socket that does not exist: check() reports it
     curves_.push_back(link_bezier(from->center, to->center));
     curve_link_.push_back(int(k));
   }
@@ -267,6 +302,8 @@ void NodeEditorPanel::draw_canvas(EditorState& state) {
   ImGui::PopStyleVar(4);
   ImGui::SetWindowFontScale(1.f);
   draw_swatch(state, boxes);
+  check(graph_);
+  draw_problem_outlines(boxes);
   if (edited) {
     GraphDesc g = graph_;
     for (GraphNodeDesc& n : g.nodes)

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,8 @@ class NodeEditorPanel {
   void header(EditorState& state, bool* open);
   void draw_canvas(EditorState& state);
   void draw_swatch(EditorState& state, const std::vector<NodeBox>& boxes);
+  void check(const GraphDesc& graph);
+  void draw_problem_outlines(const std::vector<NodeBox>& boxes);
   void handle_mouse(EditorState& state, const std::vector<NodeBox>& boxes);
   void finish_link(EditorState& state, const std::vector<NodeBox>& boxes);
   void handle_keys(EditorState& state);
@@ -63,7 +66,9 @@ class NodeEditorPanel {
   std::map<std::string, std::vector<float>> row_heights_;  // drawn row heights per node id
   std::vector<Bezier> curves_;                             // this frame's links, canvas units
   std::vector<int> curve_link_;                            // the graph link each curve draws
-  int broken_links_ = 0;                                   // links whose sockets do not exist, last frame
+  std::optional<GraphDesc> checked_graph_;                 // the graph problems_ were found in
+  std::vector<std::string> problems_;                      // graph_checks' messages
+  std::set<std::string> problem_nodes_;                    // ids of the nodes they name
 
   Drag drag_ = Drag::none;
   Vec2 press_{0.f};  // screen
