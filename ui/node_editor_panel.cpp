@@ -478,11 +478,17 @@ void NodeEditorPanel::finish_link(EditorState& state, const std::vector<NodeBox>
   PinHit target;
   const std::optional<std::string> refusal = drag_target_refusal(boxes, &target);
   if (!target) {
-    // A picked-up link dropped on empty canvas is removed; a new one is forgotten.
+    // A picked-up link dropped on empty canvas is removed; a new one opens the add
+    // menu there, and the node chosen takes the link on its first socket that fits.
     if (picked_link_) {
       GraphDesc g = graph_;
       disconnect(g, picked_link_->to, picked_link_->input);
       commit(state, std::move(g), "Remove link");
+    } else {
+      const ImVec2 mouse = ImGui::GetIO().MousePos;
+      pending_link_ = PendingLink{link_from_output_, link_node_, link_socket_};
+      open_add_menu_ = true;
+      add_at_ = to_canvas(view_, Vec2(mouse.x, mouse.y));
     }
     return;
   }
@@ -538,13 +544,38 @@ void NodeEditorPanel::handle_keys(EditorState& state) {
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home), false)) want_frame_ = frame_is_edit_ = true;
 }
 
+// Links a node just added to the end of the link that was dropped where it stands:
+// its first input (or, for a link hanging from an input, its first output) that fits.
+void NodeEditorPanel::link_new_node(GraphDesc& g, const std::string& id, const PendingLink& link) {
+  const GraphNodeDesc* node = nullptr;
+  for (const GraphNodeDesc& n : g.nodes)
+    if (n.id == id) node = &n;
+  if (!node) return;
+  if (link.from_output) {
+    for (const SocketInfo& in : node_inputs(node->data))
+      if (!check_link(g, link.node, link.socket, id, in.name)) {
+        connect(g, link.node, link.socket, id, in.name);
+        return;
+      }
+  } else {
+    for (const SocketDecl& out : node_outputs(node->data))
+      if (!check_link(g, id, out.name, link.node, link.socket)) {
+        connect(g, id, out.name, link.node, link.socket);
+        return;
+      }
+  }
+}
+
 void NodeEditorPanel::add_menu(EditorState& state) {
   if (open_add_menu_) {
     ImGui::OpenPopup("add_node");
     add_filter_.clear();
     open_add_menu_ = false;
   }
-  if (!ImGui::BeginPopup("add_node")) return;
+  if (!ImGui::BeginPopup("add_node")) {
+    pending_link_.reset();  // the menu closed without a choice
+    return;
+  }
   const bool has_output = std::any_of(graph_.nodes.begin(), graph_.nodes.end(), [](const GraphNodeDesc& n) {
     return std::holds_alternative<OutputNode>(n.data);
   });
@@ -552,9 +583,11 @@ void NodeEditorPanel::add_menu(EditorState& state) {
     GraphDesc g = graph_;
     const std::string id = add_node(g, chosen, add_at_.x, add_at_.y);
     if (!id.empty()) {
+      if (pending_link_) link_new_node(g, id, *pending_link_);
       commit(state, std::move(g), "Add " + chosen + " node");
       selected_ = {id};
     }
+    pending_link_.reset();
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();

@@ -47,6 +47,12 @@ class NodeEditorPanel {
   void finish_link(EditorState& state, const std::vector<NodeBox>& boxes);
   void handle_keys(EditorState& state);
   void add_menu(EditorState& state);
+  // A new link dropped on empty canvas, waiting for the add menu's node.
+  struct PendingLink {
+    bool from_output = true;  // its fixed end is an output (else an input)
+    std::string node, socket;
+  };
+  static void link_new_node(GraphDesc& g, const std::string& id, const PendingLink& link);
   void draw_drag_feedback(const std::vector<NodeBox>& boxes);
   // Why the pin under the mouse cannot take the dragged link (nullopt: it can, or no pin is there).
   std::optional<std::string> drag_target_refusal(const std::vector<NodeBox>& boxes, PinHit* target) const;
@@ -84,6 +90,7 @@ class NodeEditorPanel {
   int insert_link_ = -1;                      // the link a dragged node would be inserted on
 
   bool open_add_menu_ = false;
+  std::optional<PendingLink> pending_link_;
   Vec2 add_at_{0.f};  // canvas
   std::string add_filter_;
   bool want_frame_ = false;
