@@ -163,8 +163,10 @@ CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions
       continue;
     }
     scene->geometry.add(placed->bvh, placed->to_world, placed->world);
+    const Transform to_world = transform_from_desc(obj.transform);
     scene->objects.push_back({obj.name, mat->second, -1, uint32_t(i), mat->second,
-                              combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines)});
+                              combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines),
+                              Transform{to_world.inv, to_world.m}});
     object_keys.push_back(std::move(key));
   }
   if (!result.errors.empty()) return result;

@@ -70,7 +70,7 @@ class Lowering {
   }
   VReg implicit(Implicit kind) {
     VReg& cached = kind == Implicit::uv ? uv_ : position_;
-    if (cached == kNone) cached = emit(kind == Implicit::uv ? ShaderOp::uv : ShaderOp::position, {});
+    if (cached == kNone) cached = emit(kind == Implicit::uv ? ShaderOp::uv : ShaderOp::object_position, {});
     return cached;
   }
   // The value of node i's input `index`: its link, else its parameter's constant.
@@ -281,10 +281,11 @@ void Lowering::lower_node(size_t node) {
           out(0, v, SocketType::vector);
           out(1, v, SocketType::color);
         } else if constexpr (std::is_same_v<T, GeometryNode>) {
-          constexpr ShaderOp ops[] = {ShaderOp::position, ShaderOp::normal,    ShaderOp::true_normal,
-                                      ShaderOp::uv,       ShaderOp::incoming,  ShaderOp::facing,
+          constexpr ShaderOp ops[] = {ShaderOp::position,  ShaderOp::normal,      ShaderOp::true_normal,
+                                      ShaderOp::uv,        ShaderOp::incoming,    ShaderOp::facing,
                                       ShaderOp::object_id, ShaderOp::material_id, ShaderOp::depth,
-                                      ShaderOp::random};
+                                      ShaderOp::random,    ShaderOp::object_position};
+          static_assert(std::size(ops) == T::outputs.size());
           for (size_t k = 0; k < out_count; ++k)
             out(k, k == 3 ? implicit(Implicit::uv) : emit(ops[k], {}), T::outputs[k].type);
         } else if constexpr (std::is_same_v<T, LightInputNode>) {

@@ -149,7 +149,8 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
     auto painted = build.assets.find<Shape>(key);
     if (!painted) {
       // Stroke i owns the same number of consecutive vertices (stroke_mesh.h).
-      const std::vector<Color> colors = stroke_colors(scene.materials, base_material, b.shape->roots, *b.emitter);
+      const std::vector<Color> colors = stroke_colors(scene.materials, base_material, b.shape->roots, *b.emitter,
+                                                         scene.objects[b.base_object].to_object);
       TriangleMesh mesh = std::get<TriangleMesh>(b.shape->bvh->shape());
       const size_t per_stroke = colors.empty() ? 0 : mesh.colors.size() / colors.size();
       for (size_t i = 0; i < colors.size(); ++i)

@@ -303,7 +303,7 @@ template <class V> void visit_params(CombineNode& d, V& v) {
 struct GeometryNode {
   static constexpr std::string_view type_name = "geometry";
   static constexpr std::string_view doc = "The hit: position, normals, uv, view, facing ratio, ids, depth, a random number per object.";
-  static constexpr std::array<SocketDecl, 10> outputs = {{
+  static constexpr std::array<SocketDecl, 11> outputs = {{
       {"position", SocketType::vector, "World-space position"},
       {"normal", SocketType::vector, "Shading normal, towards the viewer"},
       {"true_normal", SocketType::vector, "Geometric normal, towards the viewer"},
@@ -314,6 +314,7 @@ struct GeometryNode {
       {"material_id", SocketType::float_value, "Index of the material in the scene"},
       {"depth", SocketType::float_value, "Distance along the path from the camera"},
       {"random", SocketType::float_value, "A random number per object in [0, 1)"},
+      {"object_position", SocketType::vector, "Position in the object's own space: fixed to the object as it moves"},
   }};
   bool operator==(const GeometryNode&) const = default;
 };

@@ -86,7 +86,7 @@ Color input_color(const Vec3& v) { return glm::max(v, Vec3(0.f)); }
 
 bool instr_is_pure(ShaderOp op) {
   switch (op) {
-    case ShaderOp::position: case ShaderOp::normal: case ShaderOp::true_normal: case ShaderOp::uv:
+    case ShaderOp::position: case ShaderOp::object_position: case ShaderOp::normal: case ShaderOp::true_normal: case ShaderOp::uv:
     case ShaderOp::incoming: case ShaderOp::facing: case ShaderOp::object_id: case ShaderOp::material_id:
     case ShaderOp::depth: case ShaderOp::random: case ShaderOp::n_dot_l: case ShaderOp::shadow:
     case ShaderOp::light_color: case ShaderOp::fresnel: case ShaderOp::layer_weight_fresnel:
@@ -130,6 +130,7 @@ Vec3 eval_instr(const ShaderProgram& program, const ShaderInstr& instr, const Ve
     case ShaderOp::vector_math:
     case ShaderOp::vector_value: return vector_op(ShaderVector(instr.mode), in(0), in(1), x(2));
     case ShaderOp::position: return sp.si->p;
+    case ShaderOp::object_position: return sp.p_object;
     case ShaderOp::normal: return sp.ns;
     case ShaderOp::true_normal: return sp.ng;
     case ShaderOp::uv: return Vec3(sp.si->uv, 0.f);

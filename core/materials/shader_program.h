@@ -28,7 +28,7 @@ enum class ShaderOp : uint8_t {
   // vectors (mode: VectorOp); vector_value is the float result of dot and length
   vector_math, vector_value,
   // the hit
-  position, normal, true_normal, uv, incoming, facing, object_id, material_id, depth, random,
+  position, object_position, normal, true_normal, uv, incoming, facing, object_id, material_id, depth, random,
   n_dot_l, shadow, light_color, fresnel, layer_weight_fresnel, layer_weight_facing,
   // textures (aux: the image, ramp or none; mode: noise kind)
   image_color, image_alpha, checker_color, checker_fac, noise_fac, noise_color, voronoi_distance,

@@ -14,6 +14,7 @@ struct ShadingPoint {
   Vec3 wo{0.f, 0.f, 1.f};   // towards the viewer, normalised
   Normal3 ns{0.f, 0.f, 1.f};  // shading normal on the viewer's side
   Normal3 ng{0.f, 0.f, 1.f};  // geometric normal on the viewer's side
+  Point3 p_object{0.f};       // the hit in the object's own space (textures stay on a moving object)
   float depth = 0.f;          // distance along the path from the camera
   uint32_t object_id = 0;     // index in the document's objects
   uint32_t material_id = 0;   // index in the compiled material table
@@ -28,6 +29,7 @@ inline ShadingPoint shading_point(const SurfaceInteraction& si, const Vec3& wo) 
   ShadingPoint sp;
   sp.si = &si;
   sp.wo = wo;
+  sp.p_object = si.p;  // callers that know the object's transform replace it
   const bool back = glm::dot(wo, si.ng) < 0.f;
   sp.ns = back ? -si.ns : si.ns;
   sp.ng = back ? -si.ng : si.ng;

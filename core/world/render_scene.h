@@ -7,6 +7,7 @@
 #include "core/geometry/embree_scene.h"
 #include "core/lights/light.h"
 #include "core/materials/material.h"
+#include "core/math/transform.h"
 #include "core/document/desc.h"
 
 #include <string>
@@ -30,6 +31,7 @@ struct RenderObject {
   uint32_t source = 0;   // index into SceneDesc::objects
   uint32_t line_material = 0;  // material boundaries are drawn where this changes
   LineOverride lines;
+  Transform to_object;  // world to the object's own space: where graph textures are fixed
 };
 
 struct RenderScene {

@@ -113,5 +113,28 @@ TEST(GraphLightInputs, OnlyGraphsThatReadThemTraceShadowRays) {
   EXPECT_EQ(without.rays, without.paths) << "camera rays only: an unlit graph traces nothing else";
 }
 
+// Textures read the object-space position: moving the object and the camera together
+// leaves the image as it was (the texture does not slide over the surface).
+TEST(GraphTextures, StayOnAMovingObject) {
+  SceneDesc d = one_sphere_scene(32, 32);
+  GraphDesc g;
+  add(g, "noise", NoiseNode{NoiseType::gradient, 3, 4.f, 0.5f, 0.f});
+  add(g, "surface", UnlitDesc{});
+  add(g, "out", OutputNode{});
+  link(g, "noise", "color", "surface", "color");
+  link(g, "surface", "closure", "out", "surface");
+  d.materials[0].data = g;
+  SceneDesc moved = d;
+  const Vec3 offset(5.f, -2.f, 1.f);
+  moved.objects[0].transform.translate = offset;
+  moved.camera.look_from += offset;
+  moved.camera.look_at += offset;
+  const RgbImage a = render_scene(d, 2), b = render_scene(moved, 2);
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  double diff = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) diff += glm::length(a.pixels[i] - b.pixels[i]);
+  EXPECT_LT(diff / double(a.pixels.size()), 1e-3) << "mean colour difference per pixel";
+}
+
 }  // namespace
 }  // namespace inkray

@@ -169,6 +169,7 @@ TEST(ShaderNodes, Geometry) {
   const ShadingPoint sp = test_point(si);
   const GeometryNode geo;
   EXPECT_TRUE(near3(value_of(geo, "position"), Vec3(1, 2, 3)));
+  EXPECT_TRUE(near3(value_of(geo, "object_position"), Vec3(-0.5f, 0.25f, 2.f)));
   EXPECT_TRUE(near3(value_of(geo, "normal"), Vec3(0, 0, 1)));
   EXPECT_TRUE(near3(value_of(geo, "true_normal"), Vec3(0, 0, 1)));
   EXPECT_TRUE(near3(value_of(geo, "uv"), Vec3(0.25f, 0.75f, 0.f)));
@@ -224,12 +225,12 @@ TEST(ShaderNodes, ProceduralTextures) {
   NoiseNode noise;
   noise.octaves = 3;
   noise.distortion = 0.3f;
-  const NoiseResult n = noise_texture(si.p, NoiseKind::gradient, noise.scale, 3, noise.roughness, 0.3f);
-  EXPECT_NEAR(value_of(noise, "fac").x, n.fac, kTol) << "unlinked, noise reads the position";
+  const NoiseResult n = noise_texture(sp.p_object, NoiseKind::gradient, noise.scale, 3, noise.roughness, 0.3f);
+  EXPECT_NEAR(value_of(noise, "fac").x, n.fac, kTol) << "unlinked, noise reads the object-space position";
   EXPECT_TRUE(near3(value_of(noise, "color"), n.color));
 
   VoronoiNode voronoi;
-  const VoronoiResult v = voronoi_texture(si.p, voronoi.scale, voronoi.randomness);
+  const VoronoiResult v = voronoi_texture(sp.p_object, voronoi.scale, voronoi.randomness);
   EXPECT_NEAR(value_of(voronoi, "distance").x, v.distance, kTol);
   EXPECT_TRUE(near3(value_of(voronoi, "color"), v.color));
   EXPECT_TRUE(near3(value_of(voronoi, "position"), v.position));

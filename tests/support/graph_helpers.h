@@ -59,6 +59,7 @@ inline ShadingPoint test_point(SurfaceInteraction& si) {
   si.ng = si.ns = Normal3(0.f, 0.f, 1.f);
   si.uv = Vec2(0.25f, 0.75f);
   ShadingPoint sp = shading_point(si, glm::normalize(Vec3(0.f, 0.6f, 0.8f)));
+  sp.p_object = Point3(-0.5f, 0.25f, 2.f);  // the object moved: textures read this
   sp.depth = 7.f;
   sp.object_id = 3;
   sp.material_id = 5;

@@ -65,6 +65,7 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     ShadingPoint sp = shading_point(si, wo);
     sp.depth = out.distance + length;
     sp.object_id = object.source;
+    sp.p_object = object.to_object.point(si.p);
     sp.material_id = index;
     const auto* graph = std::get_if<GraphMaterial>(material);
     // A graph whose surfaces are all opaque to lines is what is seen, whatever it computes.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/materials/material.h"
+#include "core/math/transform.h"
 #include "core/npr/strokes/surface_point.h"
 #include "core/document/npr_desc.h"
 
@@ -15,10 +16,13 @@ namespace inkray {
 // paints half the strokes in each colour). The jitter is applied to the colour
 // as displayed (sRGB-encoded), where equal steps look equal, and is drawn from
 // (emitter seed, stroke index).
+// `to_object` takes a root into the object's own space, where graph textures are fixed.
 std::vector<Color> stroke_colors(std::span<const Material> materials, uint32_t material,
-                                 std::span<const SurfacePoint> roots, const StrokeEmitterDesc& emitter);
+                                 std::span<const SurfacePoint> roots, const StrokeEmitterDesc& emitter,
+                                 const Transform& to_object = {});
 
 // The root colour of one stroke before jitter.
-Color root_color(std::span<const Material> materials, uint32_t material, const SurfacePoint& root, float mix_u);
+Color root_color(std::span<const Material> materials, uint32_t material, const SurfacePoint& root, float mix_u,
+                 const Transform& to_object = {});
 
 }  // namespace inkray
