@@ -190,11 +190,7 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
     const Material* chosen = &scene.materials[material_index];
     Material scratch;
     if (material_flags(*chosen).resolves) {
-      ShadingPoint sp = shading_point(si, wo);
-      sp.depth = st.path_length;
-      sp.object_id = scene.objects[si.object].source;
-      sp.p_object = scene.objects[si.object].to_object.point(si.p);
-      sp.material_id = material_index;
+      ShadingPoint sp = scene_shading_point(scene, si, wo, st.path_length);
       if (material_uses_light(scene.materials, material_index))
         gather_light_inputs(scene, LightReference{si.p, si.p_error, sp.ng}, sp, &result.rays);
       const ResolvedMaterial r =

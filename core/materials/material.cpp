@@ -30,6 +30,19 @@ const EmissiveMaterial* emitter_of(const Material& material) {
                     material);
 }
 
+// The side of a mix this sample takes: b with probability luminance(factor). u is
+// rescaled to [0, 1) within the side taken, for the choices after this one.
+uint32_t mix_side(const MixMaterial& mix, const ShadingPoint& sp, float& u) {
+  float p = glm::clamp(luminance(texture_eval(mix.factor, sp.si->uv)), 0.f, 1.f);
+  if (p > 1.f - 1e-6f) p = 1.f;  // white's luminance rounds just below 1; factor 1 must be all b
+  if (u < p) {
+    u = std::min(u / p, kOneMinusEpsilon);
+    return mix.b;
+  }
+  u = std::min((u - p) / (1.f - p), kOneMinusEpsilon);
+  return mix.a;
+}
+
 }  // namespace
 
 ResolvedMaterial resolve_material(std::span<const Material> materials, uint32_t index, const ShadingPoint& sp,
@@ -39,16 +52,7 @@ ResolvedMaterial resolve_material(std::span<const Material> materials, uint32_t 
     const Material& m = materials[index];
     if (const auto* graph = std::get_if<GraphMaterial>(&m)) return run_graph(*graph->program, sp, u, scratch);
     if (!material_flags(m).resolves) return {&m, 1.f};
-    const MixMaterial& mix = std::get<MixMaterial>(m);
-    float p = glm::clamp(luminance(texture_eval(mix.factor, sp.si->uv)), 0.f, 1.f);
-    if (p > 1.f - 1e-6f) p = 1.f;  // white's luminance rounds just below 1; factor 1 must be all b
-    if (u < p) {
-      index = mix.b;
-      u = std::min(u / p, kOneMinusEpsilon);
-    } else {
-      index = mix.a;
-      u = std::min((u - p) / (1.f - p), kOneMinusEpsilon);
-    }
+    index = mix_side(std::get<MixMaterial>(m), sp, u);
   }
   return {};
 }
@@ -67,15 +71,7 @@ SurfaceOverrides material_overrides(std::span<const Material> materials, uint32_
     if (const auto* graph = std::get_if<GraphMaterial>(&m)) return shader_overrides(*graph->program, sp);
     const auto* mix = std::get_if<MixMaterial>(&m);
     if (!mix) return {};
-    float p = glm::clamp(luminance(texture_eval(mix->factor, sp.si->uv)), 0.f, 1.f);
-    if (p > 1.f - 1e-6f) p = 1.f;
-    if (u < p) {
-      index = mix->b;
-      u = std::min(u / p, kOneMinusEpsilon);
-    } else {
-      index = mix->a;
-      u = std::min((u - p) / (1.f - p), kOneMinusEpsilon);
-    }
+    index = mix_side(*mix, sp, u);
   }
   return {};
 }

@@ -52,4 +52,17 @@ struct RenderScene {
   const Material& material_of(uint32_t object) const { return materials[objects[object].material]; }
 };
 
+// What a material graph reads at a hit on one of the scene's objects, seen from `wo`
+// at `depth` along the path (the light inputs are the integrator's to gather).
+inline ShadingPoint scene_shading_point(const RenderScene& scene, const SurfaceInteraction& si, const Vec3& wo,
+                                       float depth) {
+  const RenderObject& object = scene.objects[si.object];
+  ShadingPoint sp = shading_point(si, wo);
+  sp.depth = depth;
+  sp.object_id = object.source;
+  sp.material_id = object.material;
+  sp.p_object = object.to_object.point(si.p);
+  return sp;
+}
+
 }  // namespace inkray

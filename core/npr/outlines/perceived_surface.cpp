@@ -62,11 +62,7 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     const uint32_t index = object.material;
     const Material* material = &scene.materials[index];
     Material scratch;
-    ShadingPoint sp = shading_point(si, wo);
-    sp.depth = out.distance + length;
-    sp.object_id = object.source;
-    sp.p_object = object.to_object.point(si.p);
-    sp.material_id = index;
+    const ShadingPoint sp = scene_shading_point(scene, si, wo, out.distance + length);
     const auto* graph = std::get_if<GraphMaterial>(material);
     // A graph whose surfaces are all opaque to lines is what is seen, whatever it computes.
     if (material_flags(*material).resolves && !(graph && !graph->program->lines_pass_through)) {
