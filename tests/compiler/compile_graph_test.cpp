@@ -33,6 +33,26 @@ GraphDesc toon_graph() {
   return g;
 }
 
+// The facing ratio through `length` maths nodes into a diffuse's albedo: nothing folds.
+template <class Op>
+GraphDesc math_chain(int length, Op op_of) {
+  GraphDesc g;
+  add(g, "geo", GeometryNode{});
+  std::string last = "geo", output = "facing";
+  for (int i = 0; i < length; ++i) {
+    const std::string id = "m" + std::to_string(i);
+    add(g, id, MathNode{op_of(i), false, 0.5f, 1.25f, 1.f});
+    link(g, last, output, id, "a");
+    last = id;
+    output = "value";
+  }
+  add(g, "d", DiffuseDesc{});
+  add(g, "out", OutputNode{});
+  link(g, last, output, "d", "albedo");
+  link(g, "d", "closure", "out", "surface");
+  return g;
+}
+
 TEST(GraphChecks, AWellFormedGraphCompiles) {
   const CompiledGraph c = compile(toon_graph());
   ASSERT_TRUE(c.program) << c.errors.front();
@@ -167,22 +187,7 @@ TEST(GraphLowering, ConstantsFoldAway) {
 
 TEST(GraphLowering, RegistersAreReusedOnceDead) {
   // A chain of 200 math nodes needs a handful of registers, not 200.
-  GraphDesc g;
-  add(g, "geo", GeometryNode{});
-  std::string last = "geo";
-  std::string output = "facing";
-  for (int i = 0; i < 200; ++i) {
-    const std::string id = "m" + std::to_string(i);
-    add(g, id, MathNode{MathOp(i % 7), false, 0.5f, 1.25f, 1.f});
-    link(g, last, output, id, "a");
-    last = id;
-    output = "value";
-  }
-  add(g, "d", DiffuseDesc{});
-  add(g, "out", OutputNode{});
-  link(g, last, output, "d", "albedo");
-  link(g, "d", "closure", "out", "surface");
-  const CompiledGraph c = compile(g);
+  const CompiledGraph c = compile(math_chain(200, [](int i) { return MathOp(i % 7); }));
   ASSERT_TRUE(c.program) << c.errors.front();
   EXPECT_EQ(c.program->code.size(), 201u);
   EXPECT_LE(c.program->register_count - int(c.program->constants.size()), 2);
@@ -191,21 +196,7 @@ TEST(GraphLowering, RegistersAreReusedOnceDead) {
 // Checks and lowering walk graphs without recursion: a very long chain is no stack risk,
 // and a graph with more closures than the tree's indices hold is refused with a message.
 TEST(GraphLowering, HugeGraphsAreHandledOrRefusedCleanly) {
-  GraphDesc chain;
-  add(chain, "geo", GeometryNode{});
-  std::string last = "geo", output = "facing";
-  for (int i = 0; i < 20000; ++i) {
-    const std::string id = "m" + std::to_string(i);
-    add(chain, id, MathNode{MathOp::multiply, false, 0.f, 1.f, 1.f});
-    link(chain, last, output, id, "a");
-    last = id;
-    output = "value";
-  }
-  add(chain, "d", DiffuseDesc{});
-  add(chain, "out", OutputNode{});
-  link(chain, last, output, "d", "albedo");
-  link(chain, "d", "closure", "out", "surface");
-  const CompiledGraph c = compile(chain);
+  const CompiledGraph c = compile(math_chain(20000, [](int) { return MathOp::multiply; }));
   ASSERT_TRUE(c.program) << c.errors.front();
   EXPECT_EQ(c.program->code.size(), 20001u);
 
