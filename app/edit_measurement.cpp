@@ -173,9 +173,25 @@ SceneDesc edited(EditKind kind, int step, const SceneDesc& base, SceneDesc s) {
       break;
     }
     case EditKind::exposure:
-      break;  // a view setting, not the document
+    case EditKind::gizmo_drag:
+      break;  // exposure is a view setting, not the document; drags are made by drag_gizmo
   }
   return s;
+}
+
+const char* edit_label(EditKind kind) {
+  switch (kind) {
+    case EditKind::camera: return "Orbit";
+    case EditKind::material: return "Material colour";
+    case EditKind::node: return "Node colour";
+    case EditKind::light: return "Light intensity";
+    case EditKind::transform: return "Move";
+    case EditKind::line_colour: return "Line colour";
+    case EditKind::stroke_parameter: return "Stroke hue jitter";
+    case EditKind::exposure: return "Exposure";
+    case EditKind::gizmo_drag: return "Move";
+  }
+  return "";
 }
 
 // Whether `now` shows `before`'s film at an exposure `scale` (2^stops) brighter, rather than
@@ -219,6 +235,7 @@ std::string unavailable(EditKind kind, const SceneDesc& s) {
     case EditKind::light:
       return s.lights.empty() && first_emissive(s) < 0 ? "no light and no emissive material to edit" : "";
     case EditKind::transform:
+    case EditKind::gizmo_drag:
       return s.objects.empty() ? "no object to move" : "";
     case EditKind::stroke_parameter:
       return s.strokes.empty() ? "no stroke emitter to edit" : "";
@@ -254,7 +271,8 @@ bool EditMeasurement::step(EditorApp& app, double work_ms) {
     // replaces an older one unseen, and each would then be measured against the wrong image.
     const bool previous_shown = kind() != EditKind::exposure || pending_.empty() ||
                                 Clock::now() - last_edit_time_ > std::chrono::seconds(5);
-    if (++frames_since_edit_ >= 15 && previous_shown) {
+    const int frames_apart = kind() == EditKind::gizmo_drag ? 1 : 15;
+    if (++frames_since_edit_ >= frames_apart && previous_shown) {
       last_edit_time_ = Clock::now();
       frames_since_edit_ = 0;
       make_edit(app);
@@ -280,6 +298,41 @@ void EditMeasurement::start_kind(EditorApp& app) {
   frame_ms_.clear();
   exposure_latencies_ms_.clear();
   kept_percent_.clear();
+  gizmo_.reset();
+  if (kind() == EditKind::gizmo_drag) grab_gizmo(app);
+}
+
+void EditMeasurement::grab_gizmo(EditorApp& app) {
+  // The first object selected, as a click would, so its gizmo is drawn; the first axis
+  // handle seen end to end is taken near its tip.
+  EditorState& state = app.state();
+  state.selection = {ItemKind::object, 0};
+  const SceneDesc& scene = state.document.scene();
+  const ViewportFrame& f = app.viewport_frame();
+  const int w = std::max(scene.render.width, 1), h = std::max(scene.render.height, 1);
+  const ViewMapping view{Camera(scene.camera, w, h), Vec2(f.image_x, f.image_y), f.image_h / float(h)};
+  const GizmoFrame frame = gizmo_frame(scene.objects[0], GizmoMode::translate, view);
+  for (int a = 0; a < 3; ++a) {
+    const GizmoHandle handle{HandleKind::axis, a};
+    Vec2 centre, tip;
+    if (!handle_shown(frame, handle, view) || !view.project(frame.pivot, &centre) ||
+        !view.project(frame.pivot + 0.8f * frame.length * frame.axes[size_t(a)], &tip))
+      continue;
+    grab_ = tip;
+    along_ = glm::normalize(tip - centre);
+    gizmo_.emplace(scene.objects[0], GizmoMode::translate, handle, view, grab_);
+    return;
+  }
+}
+
+void EditMeasurement::drag_gizmo(EditorApp& app, int step) {
+  EditorState& state = app.state();
+  if (!gizmo_) return;
+  // 3 window pixels a step along the handle's axis on screen, out and back.
+  const TransformDesc t = gizmo_->drag_to(grab_ + along_ * (3.f * float(step)), false);
+  SceneDesc s = state.document.scene();
+  s.objects[0].transform = t;
+  state.edit(std::move(s), edit_label(EditKind::gizmo_drag), "viewport:gizmo:measure");
 }
 
 void EditMeasurement::make_edit(EditorApp& app) {
@@ -296,10 +349,10 @@ void EditMeasurement::make_edit(EditorApp& app) {
     e.scale = std::exp2(exposure - shown_exposure_);
     // One not seen in 5 s is superseded, as a document revision is by a newer one.
     pending_.clear();
+  } else if (kind() == EditKind::gizmo_drag) {
+    drag_gizmo(app, step);
   } else {
-    static constexpr std::array<const char*, 7> kLabels = {
-        "Orbit", "Material colour", "Light intensity", "Move", "Line colour", "Stroke hue jitter", ""};
-    app.state().edit(edited(kind(), step, base_, app.state().document.scene()), kLabels[size_t(kind())]);
+    app.state().edit(edited(kind(), step, base_, app.state().document.scene()), edit_label(kind()));
   }
   pending_.push_back(e);
 }

@@ -4,11 +4,13 @@
 #pragma once
 
 #include "ui/editor_app.h"
+#include "ui/gizmo.h"
 
 #include <array>
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,10 +20,15 @@ namespace inkray::measure {
 using Clock = std::chrono::steady_clock;
 
 // What --measure-edits changes: each a small step, as one frame of a slider drag makes.
-// `node` is a value on a node of the first material graph an object uses.
-enum class EditKind { camera, material, node, light, transform, line_colour, stroke_parameter, exposure };
-constexpr std::array<std::string_view, 8> kEditKindNames = {
-    "camera", "material", "node", "light", "transform", "line-colour", "stroke-parameter", "exposure"};
+// `node` is a value on a node of the first material graph an object uses. `gizmo-drag`
+// drags the first object's translate gizmo along an axis, a step every frame, through
+// the gizmo's drag maths (ui/gizmo.h) and the same undoable edit as the mouse makes.
+enum class EditKind {
+  camera, material, node, light, transform, line_colour, stroke_parameter, exposure, gizmo_drag
+};
+constexpr std::array<std::string_view, 9> kEditKindNames = {
+    "camera",           "material", "node",      "light",     "transform", "line-colour",
+    "stroke-parameter", "exposure", "gizmo-drag"};
 
 // "camera, material, ...", for help and error messages.
 std::string edit_kind_list();
@@ -30,9 +37,9 @@ std::string unavailable(EditKind kind, const SceneDesc& scene);
 // "what: n=... p50=... p95=... max=..." (milliseconds).
 void print_stats(const char* what, const std::vector<double>& ms);
 
-// Makes the edits of --measure-edits, one every 15 frames, follows each to the first image
-// on screen that shows it, and prints a line per kind. step() runs once a frame, after the
-// frame's work, and returns false when every kind is done.
+// Makes the edits of --measure-edits, one every 15 frames (gizmo drags: every frame), follows
+// each to the first image on screen that shows it, and prints a line per kind. step() runs
+// once a frame, after the frame's work, and returns false when every kind is done.
 class EditMeasurement {
  public:
   EditMeasurement(std::vector<EditKind> kinds, int edits) : kinds_(std::move(kinds)), edits_(edits) {}
@@ -52,6 +59,8 @@ class EditMeasurement {
   EditKind kind() const { return kinds_[kind_]; }
   void start_kind(EditorApp& app);
   void make_edit(EditorApp& app);
+  void grab_gizmo(EditorApp& app);
+  void drag_gizmo(EditorApp& app, int step);
   void follow(EditorApp& app);
   void finish_kind(EditorApp& app);
 
@@ -67,6 +76,9 @@ class EditMeasurement {
   std::vector<Edit> pending_;
   std::vector<double> frame_ms_, exposure_latencies_ms_, kept_percent_;
   std::shared_ptr<const ViewportSnapshot> seen_;  // the newest image already looked at
+  // gizmo-drag: the drag, and where on screen its handle was taken and which way it runs.
+  std::optional<GizmoDrag> gizmo_;
+  Vec2 grab_{0.f}, along_{1.f, 0.f};
 };
 
 }  // namespace inkray::measure

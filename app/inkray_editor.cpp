@@ -1,13 +1,17 @@
 // inkray: the editor. GLFW window, OpenGL 3.3 core, Dear ImGui; everything
 // else is EditorApp (ui/). Headless runs for tests and measurements:
-//   inkray --screenshot OUT.png --frames N [--node-editor MATERIAL --node-layout OUT.txt] [SCENE.json]
+//   inkray --screenshot OUT.png --frames N [--window-size W H] [--widget-report OUT.txt]
+//          [--node-editor MATERIAL --node-layout OUT.txt] [--drop FILE] [SCENE.json]
 //   inkray --measure-edits N [--edit KIND,...] [SCENE.json]   (edit latency, frame
 //   times and samples kept, per kind of edit)
 #include "app/edit_measurement.h"
+#include "core/document/json_io.h"
 #include "core/image/image_io.h"
 #include "core/io/atomic_file.h"
 #include "ui/camera_controller.h"
 #include "ui/editor_app.h"
+#include "ui/fonts.h"
+#include "ui/widget_report.h"
 
 #include <GLFW/glfw3.h>
 #include <GL/gl.h>
@@ -41,7 +45,20 @@ struct Options {
   std::string select;  // object to select at start, so screenshots show the highlight
   std::string node_material;  // material to open the node editor on
   std::string node_layout;    // where to write the node editor's layout with the screenshot
+  std::string widget_report;  // where to write the named widgets' rectangles with the screenshot
+  std::vector<std::string> drops;  // files handed to the drop callback after the first frame
+  std::string scene_dump;     // where to write the document (JSON) with the screenshot
+  std::string export_path;    // export through the dialog to this file, then take the screenshot
+  float ui_scale = 0.f;       // overrides the saved interface size when set
 };
+
+// GLFW's drop callback has no user pointer of its own: the window's points at the app.
+void on_drop(GLFWwindow* window, int count, const char** paths) {
+  auto* app = static_cast<inkray::EditorApp*>(glfwGetWindowUserPointer(window));
+  if (!app) return;
+  std::vector<std::filesystem::path> files(paths, paths + count);
+  app->drop(std::move(files));
+}
 
 void usage() {
   std::puts(
@@ -56,9 +73,19 @@ void usage() {
       "                       material (colour of the first object's material), light (intensity of\n"
       "                       the first light, else an emissive strength), transform (move the first\n"
       "                       object), line-colour (outlines.silhouette.color), stroke-parameter\n"
-      "                       (hue_jitter of the first stroke emitter), exposure (the viewport's)\n"
+      "                       (hue_jitter of the first stroke emitter), exposure (the viewport's),\n"
+      "                       node (a value on a graph node), gizmo-drag (drag the first object's\n"
+      "                       move gizmo along an axis, a step every frame)\n"
       "  --threads N          viewport render threads (default: all cores but one)\n"
-      "  --size WxH           window size (default 1600x900)\n"
+      "  --window-size W H    window size in pixels (default 1600 900; also --size WxH)\n"
+      "  --ui-scale S         interface size (1 = default; the saved setting otherwise)\n"
+      "  --widget-report FILE with --screenshot: write the toolbar widgets' rectangles and the\n"
+      "                       visible area of their panels (window pixels) to FILE\n"
+      "  --drop FILE          after the first frame, drop FILE on the window as GLFW would\n"
+      "                       (repeatable)\n"
+      "  --scene-dump FILE    with --screenshot: write the document as it then is (JSON) to FILE\n"
+      "  --export FILE        fill the export dialog with FILE and press Start (replacing files);\n"
+      "                       with --screenshot, the screenshot follows the finished export\n"
       "  --select NAME        select the object NAME at start (for screenshots and tests)\n"
       "  --node-editor NAME   select the material NAME and open the node editor on it\n"
       "  --node-layout FILE   with --screenshot: write the node editor's node boxes and link ends\n"
@@ -103,6 +130,21 @@ bool parse(int argc, char** argv, Options* o) {
       o->node_layout = v;
     } else if (a == "--size" && (v = value())) {
       if (std::sscanf(v, "%dx%d", &o->width, &o->height) != 2) return false;
+    } else if (a == "--window-size" && i + 2 < argc) {
+      o->width = std::atoi(argv[++i]);
+      o->height = std::atoi(argv[++i]);
+      if (o->width < 64 || o->height < 64) return false;
+    } else if (a == "--ui-scale" && (v = value())) {
+      o->ui_scale = float(std::atof(v));
+      if (!(o->ui_scale >= 0.5f && o->ui_scale <= 3.f)) return false;
+    } else if (a == "--widget-report" && (v = value())) {
+      o->widget_report = v;
+    } else if (a == "--export" && (v = value())) {
+      o->export_path = v;
+    } else if (a == "--scene-dump" && (v = value())) {
+      o->scene_dump = v;
+    } else if (a == "--drop" && (v = value())) {
+      o->drops.emplace_back(v);
     } else if (!a.empty() && a[0] != '-' && o->scene.empty()) {
       o->scene = a;
     } else {
@@ -111,6 +153,24 @@ bool parse(int argc, char** argv, Options* o) {
     }
   }
   return true;
+}
+
+// The monitor's scale: GLFW's content scale where the desktop sets one (Xft.dpi, Wayland,
+// macOS), else the monitor's pixel density against the 96 dpi the sizes were drawn for,
+// in quarter steps; X servers without a desktop setting report a content scale of 1 on
+// 4K monitors too.
+float monitor_scale(GLFWwindow* window) {
+  float x = 1.f, y = 1.f;
+  glfwGetWindowContentScale(window, &x, &y);
+  const float content = std::max(x, y);
+  if (content != 1.f) return content;
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+  int width_mm = 0, height_mm = 0;
+  if (monitor) glfwGetMonitorPhysicalSize(monitor, &width_mm, &height_mm);
+  if (!mode || width_mm < 100) return 1.f;  // unknown or implausible (projectors report 0)
+  const float dpi = float(mode->width) / (float(width_mm) / 25.4f);
+  return std::clamp(std::round(dpi / 96.f * 4.f) / 4.f, 1.f, 3.f);
 }
 
 bool write_screenshot(const std::string& file, int width, int height) {
@@ -169,12 +229,7 @@ int main(int argc, char** argv) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // the layout is fixed; nothing to remember
-  ImGui::StyleColorsDark();
-  ImGuiStyle& style = ImGui::GetStyle();
-  style.WindowRounding = 0.f;
-  style.FrameRounding = 3.f;
-  style.WindowBorderSize = 1.f;
+  io.IniFilename = nullptr;  // panel sizes are the editor's own settings (ui/ui_settings.h)
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -186,6 +241,11 @@ int main(int argc, char** argv) {
     // Scripted runs must not stop at a recovery question.
     editor_options.offer_recovery = opt.screenshot.empty() && opt.measure_edits == 0;
     inkray::EditorApp app(editor_options);
+    if (opt.ui_scale > 0.f) app.set_ui_scale_setting(opt.ui_scale);
+    glfwSetWindowUserPointer(window, &app);
+    glfwSetDropCallback(window, on_drop);
+    inkray::widget_report::enable(!opt.widget_report.empty());
+    float font_scale = 0.f;  // the scale the font atlas was built for
     if (!opt.select.empty()) {
       inkray::EditorState& state = app.state();
       const auto& objects = state.document.scene().objects;
@@ -233,6 +293,8 @@ int main(int argc, char** argv) {
 
     using clock = std::chrono::steady_clock;
     const auto start = clock::now();
+    uint64_t export_id = 0;
+    int export_finished_frame = -1;  // the screenshot waits a few frames more: the image view opens
     int frame = 0;
     // A failed --select or --edit leaves exit_code set and skips the loop.
     for (; exit_code == 0; ++frame) {
@@ -242,9 +304,29 @@ int main(int argc, char** argv) {
         glfwSetWindowShouldClose(window, GLFW_FALSE);
         app.request_quit();
       }
+      if (frame == 1) {
+        std::vector<const char*> drops;
+        for (const auto& d : opt.drops) drops.push_back(d.c_str());
+        if (!drops.empty()) on_drop(window, int(drops.size()), drops.data());
+      }
+      app.set_content_scale(monitor_scale(window));
+      if (app.ui_scale() != font_scale) {
+        // The atlas is rebuilt between frames; the backend uploads it at its first frame,
+        // and again here on later changes.
+        const bool uploaded = font_scale != 0.f;
+        font_scale = app.ui_scale();
+        std::string warning;
+        inkray::set_ui_scale(font_scale, &warning);
+        if (!warning.empty()) app.state().log.warning(warning);
+        if (uploaded) {
+          ImGui_ImplOpenGL3_DestroyFontsTexture();
+          ImGui_ImplOpenGL3_CreateFontsTexture();
+        }
+      }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
+      inkray::widget_report::begin_frame();
       int w = 0, h = 0;
       glfwGetFramebufferSize(window, &w, &h);
       app.frame(float(w), float(h));
@@ -256,15 +338,49 @@ int main(int argc, char** argv) {
       const double work_ms = std::chrono::duration<double, std::milli>(clock::now() - frame_start).count();
       glfwSetWindowTitle(window, app.window_title().c_str());
 
+      if (!opt.export_path.empty() && frame == 1) {
+        export_id = app.export_ui().start_for_test(app.state(), opt.export_path);
+        if (export_id == 0) {
+          std::fprintf(stderr, "inkray: --export: %s\n", app.export_ui().dialog_error().c_str());
+          exit_code = 1;
+          break;
+        }
+      }
+      if (export_id != 0 && export_finished_frame < 0) {
+        const inkray::ExportEntry* e = app.export_ui().queue().find(export_id);
+        if (!e || e->state == inkray::ExportState::done || e->state == inkray::ExportState::failed ||
+            e->state == inkray::ExportState::cancelled) {
+          export_finished_frame = frame;
+          if (!e || e->state != inkray::ExportState::done) {
+            std::fprintf(stderr, "inkray: --export: %s\n", e ? e->error.c_str() : "the export vanished");
+            exit_code = 1;
+            break;
+          }
+          std::printf("export: %d threads, %u spp in %.2f s\n", e->progress.threads, e->progress.spp,
+                      e->progress.elapsed_seconds);
+          for (const auto& f : e->written) std::printf("export wrote: %s\n", f.string().c_str());
+        }
+      }
+      const bool export_settled = opt.export_path.empty() || (export_finished_frame >= 0 && frame >= export_finished_frame + 5);
       const double seconds = std::chrono::duration<double>(clock::now() - start).count();
-      if (!opt.screenshot.empty() && frame >= opt.frames &&
+      if (!opt.screenshot.empty() && frame >= opt.frames && export_settled &&
           (app.viewport().shown_full_resolution() || seconds > 120.0)) {
         const auto& v = app.viewport_frame();
         std::printf("viewport image: %d %d %d %d\n", int(v.image_x), int(v.image_y), int(v.image_w),
                     int(v.image_h));
         std::printf("viewport spp: %u\n", app.viewport().shown_spp());
+        std::printf("ui scale: %.2f\n", app.ui_scale());
         exit_code = write_screenshot(opt.screenshot, w, h) ? 0 : 1;
         if (!opt.node_layout.empty() && !write_text(opt.node_layout, app.node_editor().layout())) exit_code = 1;
+        if (!opt.scene_dump.empty() &&
+            !write_text(opt.scene_dump, inkray::scene_to_string(app.state().document.scene()))) {
+          exit_code = 1;
+        }
+        if (!opt.widget_report.empty() &&
+            !write_text(opt.widget_report, "window 0 0 " + std::to_string(w) + " " + std::to_string(h) + "\n" +
+                                               inkray::widget_report::text())) {
+          exit_code = 1;
+        }
         break;
       }
       if (measurement && !measurement->step(app, work_ms)) {
@@ -281,6 +397,7 @@ int main(int argc, char** argv) {
       app.wait_for_image(frame_start + std::chrono::microseconds(16600));
     }
   }
+  glfwSetWindowUserPointer(window, nullptr);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/document/desc.h"
+#include "ui/selection.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,12 +19,18 @@ class CommandStack {
 
   // Sets scene = after and records the step. While merging is open, a step with
   // the same non-empty merge key as the previous one extends it instead, so a
-  // slider drag becomes one undo step; end_merge() closes it.
-  void apply(SceneDesc& scene, SceneDesc after, std::string label, std::string merge_key = {});
+  // slider drag becomes one undo step; end_merge() closes it. `selection` is what was
+  // selected before the step: undoing it selects that again (a deleted item comes back
+  // selected), and redoing it selects what was selected when it was undone.
+  void apply(SceneDesc& scene, SceneDesc after, std::string label, std::string merge_key = {},
+             Selection selection = {});
   void end_merge() { merge_open_ = false; }
 
-  bool undo(SceneDesc& scene);
-  bool redo(SceneDesc& scene);
+  bool undo(SceneDesc& scene, Selection* selection = nullptr);
+  // Takes back the newest step as if it was never made (no redo entry): a gesture the
+  // user cancelled with Esc. False when there is none.
+  bool discard_newest(SceneDesc& scene);
+  bool redo(SceneDesc& scene, Selection* selection = nullptr);
   bool can_undo() const { return !done_.empty(); }
   bool can_redo() const { return !undone_.empty(); }
   std::string undo_label() const { return done_.empty() ? std::string() : done_.back().label; }
@@ -41,6 +48,7 @@ class CommandStack {
     std::string merge_key;
     SceneDesc before, after;
     uint64_t id = 0;
+    Selection selected_before, selected_after;
   };
   std::vector<Step> done_, undone_;
   bool merge_open_ = false;

@@ -1,11 +1,29 @@
 #include "ui/document.h"
 
 #include "core/document/asset_paths.h"
+#include "core/document/asset_relink.h"
 #include "core/document/json_io.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace inkray {
+namespace {
+
+// The reader's warning for a file in use that is not there ("<file>: <json path>:
+// file not found: ...") gives way to one line per file naming who uses it.
+void separate_missing_files(const SceneDesc& scene, std::vector<std::string>& warnings,
+                            std::vector<std::string>& missing_files) {
+  const std::vector<AssetReference> references = list_asset_references(scene);
+  for (const AssetReference& r : references) {
+    if (r.exists) continue;
+    const std::string at = ": " + r.site.at + ": ";
+    std::erase_if(warnings, [&](const std::string& w) { return w.find(at) != std::string::npos; });
+  }
+  for (const MissingAsset& m : missing_assets(references)) missing_files.push_back(describe(m));
+}
+
+}  // namespace
 
 Document::Document() { reset(default_scene()); }
 
@@ -41,30 +59,41 @@ std::string Document::display_name() const {
   return name;
 }
 
-void Document::edit(SceneDesc after, std::string label, std::string merge_key) {
-  history_.apply(scene_, std::move(after), std::move(label), std::move(merge_key));
+void Document::edit(SceneDesc after, std::string label, std::string merge_key, Selection selection) {
+  history_.apply(scene_, std::move(after), std::move(label), std::move(merge_key), selection);
   ++revision_;
 }
 
-bool Document::undo() {
-  if (!history_.undo(scene_)) return false;
+bool Document::undo(Selection* selection) {
+  if (!history_.undo(scene_, selection)) return false;
   ++revision_;
   return true;
 }
 
-bool Document::redo() {
-  if (!history_.redo(scene_)) return false;
+bool Document::discard_newest() {
+  if (!history_.discard_newest(scene_)) return false;
+  ++revision_;
+  return true;
+}
+
+bool Document::redo(Selection* selection) {
+  if (!history_.redo(scene_, selection)) return false;
   ++revision_;
   return true;
 }
 
 bool Document::open(const std::filesystem::path& file, std::vector<std::string>* errors,
-                    std::vector<std::string>* warnings) {
-  return open_loaded(load_scene(file, ReadFor::editing), file, errors, warnings);
+                    std::vector<std::string>* warnings, std::vector<std::string>* missing_files) {
+  return open_loaded(load_scene(file, ReadFor::editing), file, errors, warnings, missing_files);
 }
 
 bool Document::open_loaded(SceneLoadResult loaded, const std::filesystem::path& file,
-                           std::vector<std::string>* errors, std::vector<std::string>* warnings) {
+                           std::vector<std::string>* errors, std::vector<std::string>* warnings,
+                           std::vector<std::string>* missing_files) {
+  if (loaded && missing_files) {
+    missing_files->clear();
+    separate_missing_files(*loaded.scene, loaded.warnings, *missing_files);
+  }
   if (warnings) *warnings = std::move(loaded.warnings);
   if (!loaded) {
     if (errors) *errors = std::move(loaded.errors);

@@ -26,20 +26,26 @@ class Document {
   // "cornell.json*" style: file name and an unsaved mark.
   std::string display_name() const;
 
-  void edit(SceneDesc after, std::string label, std::string merge_key = {});
+  // `selection` (what was selected before the edit) comes back on undo; see CommandStack.
+  void edit(SceneDesc after, std::string label, std::string merge_key = {}, Selection selection = {});
   void end_merge() { history_.end_merge(); }
-  bool undo();
-  bool redo();
+  bool undo(Selection* selection = nullptr);
+  // The newest step taken back with no redo entry (see CommandStack::discard_newest).
+  bool discard_newest();
+  bool redo(Selection* selection = nullptr);
   const CommandStack& history() const { return history_; }
 
   // Replaces the document; on failure the current one stays and *errors says why. A
-  // document that opens but cannot render yet (a missing file, a dangling name) lists
-  // why in *warnings, so the user can mend it.
+  // document that opens but cannot render yet (a dangling name, an unset file) lists
+  // why in *warnings, so the user can mend it. Files it names that are not on disk
+  // render as placeholders: with `missing_files` given they are listed there instead,
+  // one line per file with who uses it (asset_relink.h), else in *warnings.
   bool open(const std::filesystem::path& file, std::vector<std::string>* errors,
-            std::vector<std::string>* warnings = nullptr);
+            std::vector<std::string>* warnings = nullptr, std::vector<std::string>* missing_files = nullptr);
   // The same for a file already read (for editing) elsewhere, e.g. by a SceneLoader.
   bool open_loaded(SceneLoadResult loaded, const std::filesystem::path& file, std::vector<std::string>* errors,
-                   std::vector<std::string>* warnings = nullptr);
+                   std::vector<std::string>* warnings = nullptr,
+                   std::vector<std::string>* missing_files = nullptr);
   void reset(SceneDesc scene, std::filesystem::path file = {}, bool dirty = false);
   bool save(std::string* error);
   bool save_as(const std::filesystem::path& file, std::string* error);

@@ -2,6 +2,7 @@
 
 #include "ui/app_paths.h"
 #include "ui/camera_controller.h"
+#include "ui/file_drop.h"
 #include "ui/log_panel.h"
 #include "ui/properties_panel.h"
 #include "ui/render_panel.h"
@@ -17,15 +18,11 @@
 namespace inkray {
 namespace {
 
-constexpr float kSideWidth = 300.f;
-constexpr float kPropertiesWidth = 380.f;
-constexpr float kBottomHeight = 250.f;
-// The viewport's share of the height when the node editor is open: at 1600 x 900 the
-// example graphs (about 490 units tall) then fit the canvas at zoom 1, where text is sharp.
-constexpr float kNodeSplit = 0.4f;
+// Panels are resized by dragging their inner edges (begin_panel), never moved.
 constexpr ImGuiWindowFlags kPanelFlags =
-    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-    ImGuiWindowFlags_NoBringToFrontOnFocus;
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+std::filesystem::path settings_file() { return editor_config_dir() / "editor.txt"; }
 
 // The UI thread keeps a core for itself, so frames stay smooth while rendering.
 int viewport_threads(int requested) {
@@ -48,6 +45,9 @@ EditorApp::EditorApp(EditorOptions options)
       recent_(editor_config_dir() / "recent.txt"),
       autosave_(editor_config_dir() / "recovery.json", options_.autosave_interval) {
   recent_.load();
+  std::vector<std::string> problems;
+  settings_ = read_ui_settings(settings_file(), &problems);
+  for (const auto& p : problems) state_.log.warning(p + " (skipped)");
   state_.swatches = swatches_.get();
   state_.home_camera = state_.document.scene().camera;
   if (options_.offer_recovery) {
@@ -64,6 +64,10 @@ EditorApp::EditorApp(EditorOptions options)
 EditorApp::~EditorApp() {
   // Reached only on a clean exit: the recovery file is for crashes.
   if (!recovery_) autosave_.clear();
+  std::string error;
+  if (settings_changed_ && !write_ui_settings(settings_file(), settings_, &error)) {
+    std::fprintf(stderr, "inkray: %s\n", error.c_str());
+  }
 }
 
 std::string EditorApp::window_title() const { return state_.document.display_name() + " - inkray"; }
@@ -109,8 +113,8 @@ void EditorApp::finish_open(const std::filesystem::path& file, SceneLoadResult l
     state_.log.info("opening " + file.string() + " cancelled");
     return;
   }
-  std::vector<std::string> errors, warnings;
-  if (!state_.document.open_loaded(std::move(loaded), file, &errors, &warnings)) {
+  std::vector<std::string> errors, warnings, missing;
+  if (!state_.document.open_loaded(std::move(loaded), file, &errors, &warnings, &missing)) {
     // The current document stays; the errors go to a dialog and the log.
     for (const auto& e : errors) state_.log.error(e);
     load_errors_ = std::move(errors);
@@ -123,6 +127,7 @@ void EditorApp::finish_open(const std::filesystem::path& file, SceneLoadResult l
   recent_.add(file);
   state_.log.info("opened " + file.string());
   for (const auto& w : warnings) state_.log.warning(w + " (the scene opens, but renders once this is mended)");
+  for (const auto& m : missing) state_.log.warning(m + ": drawn as a placeholder until located");
 }
 
 void EditorApp::save(bool choose_file) {
@@ -160,24 +165,6 @@ void EditorApp::frame_selected() {
   state_.edit(std::move(edited), "Frame selected");
 }
 
-void EditorApp::start_export() {
-  const ExportSettings& e = state_.export_settings;
-  ExportRequest request;
-  request.scene = state_.document.scene();
-  std::filesystem::path out = e.output;
-  if (out.is_relative() && !state_.document.file().empty()) out = state_.document.file().parent_path() / out;
-  request.output = out;
-  request.spp = e.spp;
-  request.time_seconds = e.time_limit;
-  for (size_t i = 0; i < kAovNames.size(); ++i) {
-    if (e.aovs[i]) request.aovs.push_back(Aov(i));
-  }
-  // One thread: the viewport keeps the rest and stays interactive.
-  request.threads = 1;
-  state_.log.info("exporting " + out.string() + " at " + std::to_string(e.spp) + " spp");
-  state_.export_job = std::make_unique<ExportJob>(std::move(request));
-}
-
 void EditorApp::menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
@@ -199,8 +186,8 @@ void EditorApp::menu_bar() {
   }
   if (ImGui::BeginMenu("Edit")) {
     const CommandStack& h = state_.document.history();
-    if (ImGui::MenuItem(("Undo " + h.undo_label()).c_str(), "Ctrl+Z", false, h.can_undo())) state_.document.undo();
-    if (ImGui::MenuItem(("Redo " + h.redo_label()).c_str(), "Ctrl+Y", false, h.can_redo())) state_.document.redo();
+    if (ImGui::MenuItem(("Undo " + h.undo_label()).c_str(), "Ctrl+Z", false, h.can_undo())) state_.document.undo(&state_.selection);
+    if (ImGui::MenuItem(("Redo " + h.redo_label()).c_str(), "Ctrl+Y", false, h.can_redo())) state_.document.redo(&state_.selection);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
@@ -211,6 +198,23 @@ void EditorApp::menu_bar() {
       s.camera = state_.home_camera;
       state_.edit(std::move(s), "Reset camera");
     }
+    ImGui::Separator();
+    ImGui::TextDisabled("Interface size %d%%", int(std::round(settings_.ui_scale * 100.f)));
+    if (ImGui::MenuItem("Larger", "Ctrl+=")) change_ui_scale(1.1f);
+    if (ImGui::MenuItem("Smaller", "Ctrl+-")) change_ui_scale(1.f / 1.1f);
+    if (ImGui::MenuItem("Default size", "Ctrl+0")) change_ui_scale(0.f);
+    if (ImGui::MenuItem("Reset panel sizes")) settings_.layout = {}, settings_changed_ = true;
+    ImGui::EndMenu();
+  }
+  if (missing_assets_.has_missing()) {
+    // A badge in the menu bar, in the placeholders' magenta: files to locate.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.35f, 1.f, 1.f));
+    if (ImGui::MenuItem(missing_assets_.badge_text().c_str())) missing_assets_.show();
+    ImGui::PopStyleColor();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    if (ImGui::MenuItem("Shortcuts and help", "F1")) help_.show_shortcuts();
+    if (ImGui::MenuItem("About inkray")) help_.show_about();
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();
@@ -221,12 +225,18 @@ void EditorApp::shortcuts() {
   if (io.WantTextInput || file_dialog_.is_open()) return;
   // With the node canvas focused, Delete and duplicate act on its nodes, not on the scene.
   const bool nodes_have_keys = show_node_editor_ && node_editor_.focused();
+  constexpr int kGlfwKeyF1 = 290;  // ImGui 1.86 names no function keys; its key array is GLFW's
+  if (ImGui::IsKeyPressed(kGlfwKeyF1, false)) help_.show_shortcuts();
   if (io.KeyCtrl) {
+    // GLFW key codes: '=' 61, '-' 45, '0' 48; the keypad's + and - are 334 and 333.
+    if (ImGui::IsKeyPressed('=', false) || ImGui::IsKeyPressed(334, false)) change_ui_scale(1.1f);
+    if (ImGui::IsKeyPressed('-', false) || ImGui::IsKeyPressed(333, false)) change_ui_scale(1.f / 1.1f);
+    if (ImGui::IsKeyPressed('0', false)) change_ui_scale(0.f);
     if (ImGui::IsKeyPressed('N', false)) guarded(Pending::new_document);
     if (ImGui::IsKeyPressed('O', false)) guarded(Pending::open_dialog);
     if (ImGui::IsKeyPressed('S', false)) save(io.KeyShift);
-    if (ImGui::IsKeyPressed('Z', false)) io.KeyShift ? state_.document.redo() : state_.document.undo();
-    if (ImGui::IsKeyPressed('Y', false)) state_.document.redo();
+    if (ImGui::IsKeyPressed('Z', false)) io.KeyShift ? state_.document.redo(&state_.selection) : state_.document.undo(&state_.selection);
+    if (ImGui::IsKeyPressed('Y', false)) state_.document.redo(&state_.selection);
     if (ImGui::IsKeyPressed('D', false) && !nodes_have_keys) {
       SceneDesc s = state_.document.scene();
       const Selection copy = duplicate_item(s, state_.selection);
@@ -237,61 +247,54 @@ void EditorApp::shortcuts() {
     }
   } else if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false) && !nodes_have_keys) {
     SceneDesc s = state_.document.scene();
-    if (delete_item(s, state_.selection)) {
-      state_.edit(std::move(s), "Delete");
-      state_.selection = {};
-    }
+    if (delete_item(s, state_.selection) && state_.edit_checked(std::move(s), "Delete")) state_.selection = {};
   }
+}
+
+bool EditorApp::begin_panel(const char* name, Panel panel, const PanelRects& placed, int imgui_flags) {
+  const PanelRect& r = placed[panel];
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
+  const bool open = ImGui::Begin(name, nullptr, imgui_flags);
+  // ImGui resizes the window inside Begin when one of its edges is dragged: fold that
+  // into the layout, which places every panel from the next frame on.
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  const PanelRect now{pos.x, pos.y, size.x, size.y};
+  if (now.x != r.x || now.y != r.y || now.w != r.w || now.h != r.h) {
+    settings_.layout = resized(settings_.layout, panel, placed, now, ui_scale(), show_node_editor_);
+    settings_changed_ = true;
+  }
+  return open;
 }
 
 void EditorApp::layout(float width, float height) {
   const float top = ImGui::GetFrameHeight();  // the menu bar
-  const float body = height - top;
-  const float centre_w = std::max(width - kSideWidth - kPropertiesWidth, 200.f);
-  // With the node editor open, it spans the scene and viewport columns below them, and
-  // the output tabs move under the properties: nodes need width more than the log does.
-  const bool nodes = show_node_editor_;
-  const float viewport_h =
-      nodes ? std::max(std::floor(body * kNodeSplit), 150.f) : std::max(body - kBottomHeight, 150.f);
-  const float right_x = kSideWidth + centre_w;
-  const float properties_h = nodes ? std::max(body - kBottomHeight, 150.f) : body;
+  const PanelRects placed = place_panels(settings_.layout, width, height, top, ui_scale(), show_node_editor_);
 
-  ImGui::SetNextWindowPos(ImVec2(0, top));
-  ImGui::SetNextWindowSize(ImVec2(kSideWidth, nodes ? viewport_h : body));
-  if (ImGui::Begin("Scene", nullptr, kPanelFlags)) draw_scene_graph_panel(state_);
+  if (begin_panel("Scene", Panel::scene, placed, kPanelFlags)) draw_scene_graph_panel(state_);
   ImGui::End();
 
-  ImGui::SetNextWindowPos(ImVec2(kSideWidth, top));
-  ImGui::SetNextWindowSize(ImVec2(centre_w, viewport_h));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
-  if (ImGui::Begin("Viewport", nullptr, kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
+  if (begin_panel("Viewport", Panel::viewport, placed,
+                  kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
     viewport_frame_ = viewport_->draw(state_, renderer_);
   }
   ImGui::End();
   ImGui::PopStyleVar();
 
-  if (nodes) {
-    ImGui::SetNextWindowPos(ImVec2(0, top + viewport_h));
-    ImGui::SetNextWindowSize(ImVec2(right_x, body - viewport_h));
+  if (show_node_editor_) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 3));
     // No title bar: the panel's first row is its title, and the canvas gets the height.
-    if (ImGui::Begin("Node editor", nullptr,
-                     kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
-                         ImGuiWindowFlags_NoScrollWithMouse)) {
+    if (begin_panel("Node editor", Panel::node_editor, placed,
+                    kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                        ImGuiWindowFlags_NoScrollWithMouse)) {
       node_editor_.draw(state_, &show_node_editor_);
     }
     ImGui::End();
     ImGui::PopStyleVar();
   }
 
-  if (nodes) {
-    ImGui::SetNextWindowPos(ImVec2(right_x, top + properties_h));
-    ImGui::SetNextWindowSize(ImVec2(kPropertiesWidth, body - properties_h));
-  } else {
-    ImGui::SetNextWindowPos(ImVec2(kSideWidth, top + viewport_h));
-    ImGui::SetNextWindowSize(ImVec2(centre_w, body - viewport_h));
-  }
-  if (ImGui::Begin("Output", nullptr, kPanelFlags)) {
+  if (begin_panel("Output", Panel::output, placed, kPanelFlags)) {
     if (ImGui::BeginTabBar("bottom_tabs")) {
       if (ImGui::BeginTabItem("Render")) {
         draw_render_panel(state_, renderer_);
@@ -306,10 +309,60 @@ void EditorApp::layout(float width, float height) {
   }
   ImGui::End();
 
-  ImGui::SetNextWindowPos(ImVec2(right_x, top));
-  ImGui::SetNextWindowSize(ImVec2(kPropertiesWidth, properties_h));
-  if (ImGui::Begin("Properties", nullptr, kPanelFlags)) draw_properties_panel(state_);
+  if (begin_panel("Properties", Panel::properties, placed, kPanelFlags)) draw_properties_panel(state_);
   ImGui::End();
+}
+
+void EditorApp::set_ui_scale_setting(float scale) { settings_.ui_scale = std::clamp(scale, kMinUiScale, kMaxUiScale); }
+
+void EditorApp::change_ui_scale(float factor) {
+  settings_.ui_scale = factor == 0.f ? 1.f : std::clamp(settings_.ui_scale * factor, kMinUiScale, kMaxUiScale);
+  settings_changed_ = true;
+}
+
+void EditorApp::drop(std::vector<std::filesystem::path> files) {
+  for (auto& f : files) dropped_.push_back(std::move(f));
+}
+
+void EditorApp::handle_drops() {
+  std::vector<std::filesystem::path> files;
+  files.swap(dropped_);
+  for (const auto& file : files) {
+    switch (drop_kind(file)) {
+      case DropKind::scene: guarded(Pending::open_file, file); break;
+      case DropKind::mesh: {
+        SceneDesc s = state_.document.scene();
+        const Selection added = add_mesh(s, file.string());
+        std::string why;
+        if (state_.edit_checked(std::move(s), "Import " + file.filename().string(), &why)) {
+          state_.selection = added;
+          state_.log.info("imported " + file.string());
+        } else {
+          drop_problem_ = file.string() + ":\n" + why;
+        }
+        break;
+      }
+      case DropKind::image: {
+        SceneDesc s = state_.document.scene();
+        std::string why;
+        if (drop_image_on(s, state_.selection, file, &why)) {
+          if (!state_.edit_checked(std::move(s), "Drop " + file.filename().string(), &why)) {
+            drop_problem_ = file.string() + ":\n" + why;
+            break;
+          }
+          state_.log.info("set " + file.string() + " on " + item_name(state_.document.scene(), state_.selection));
+        } else {
+          state_.log.error(why);
+          drop_problem_ = why;
+        }
+        break;
+      }
+      case DropKind::unknown:
+        drop_problem_ = file.string() + ": not a scene (.json), a mesh (.obj) or an image (.png, .jpg, .hdr, .tga, .bmp)";
+        state_.log.error(drop_problem_);
+        break;
+    }
+  }
 }
 
 void EditorApp::dialogs() {
@@ -330,7 +383,7 @@ void EditorApp::dialogs() {
       }
       case DialogPurpose::add_mesh: {
         SceneDesc s = state_.document.scene();
-        state_.selection = add_mesh(s, chosen.string());
+        state_.selection = add_mesh(s, chosen.string(), state_.add_mesh_native_size);
         state_.edit(std::move(s), "Add mesh");
         break;
       }
@@ -379,6 +432,17 @@ void EditorApp::dialogs() {
     if (ImGui::Button("OK")) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
+  if (!drop_problem_.empty()) {
+    ImGui::OpenPopup("Cannot use the dropped file");
+    drop_message_ = std::move(drop_problem_);
+    drop_problem_.clear();
+  }
+  ImGui::SetNextWindowSize(ImVec2(32 * ImGui::GetFontSize(), 0), ImGuiCond_Appearing);
+  if (ImGui::BeginPopupModal("Cannot use the dropped file", nullptr)) {
+    ImGui::TextWrapped("%s", drop_message_.c_str());
+    if (ImGui::Button("OK")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
   if (recovery_) ImGui::OpenPopup("Recover unsaved work?");
   if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("The editor did not exit cleanly. Restore the autosaved document%s%s?",
@@ -415,7 +479,9 @@ void EditorApp::sync_renderer() {
       limits.noise_target != sent_limits_.noise_target) {
     renderer_.set_limits(sent_limits_ = limits);
   }
-  if (first_sync_ || state_.paused != sent_paused_) renderer_.set_paused(sent_paused_ = state_.paused);
+  // An export on all cores pauses the viewport unless the user asked it to keep one.
+  const bool paused = state_.paused || export_ui_.wants_viewport_paused();
+  if (first_sync_ || paused != sent_paused_) renderer_.set_paused(sent_paused_ = paused);
   const RegionRect& r = state_.region;
   if (r.x0 != sent_region_.x0 || r.y0 != sent_region_.y0 || r.x1 != sent_region_.x1 || r.y1 != sent_region_.y1) {
     renderer_.set_region(sent_region_ = r);
@@ -435,6 +501,7 @@ void EditorApp::sync_renderer() {
 
 void EditorApp::poll_background() {
   if (auto loaded = loader_.take()) finish_open(loader_.file(), std::move(*loaded));
+  for (const auto& w : renderer_.take_warnings()) state_.log.warning(w);
   if (std::vector<std::string> problems = renderer_.take_messages(); !problems.empty()) {
     for (const auto& m : problems) state_.log.error(m);
     state_.render_problems = std::move(problems);
@@ -458,11 +525,6 @@ void EditorApp::poll_background() {
                   s->stats.relative_error * 100.0);
     state_.log.info(line);
   }
-  if (state_.export_job && state_.export_job->done()) {
-    if (const std::string e = state_.export_job->error(); !e.empty()) state_.log.error("export: " + e);
-    for (const auto& f : state_.export_job->written()) state_.log.info("wrote " + f.string());
-    state_.export_job.reset();
-  }
   autosave_.tick(state_.document.scene(), state_.document.file(), state_.document.revision(),
                  state_.document.dirty(), std::chrono::steady_clock::now());
 }
@@ -470,8 +532,17 @@ void EditorApp::poll_background() {
 void EditorApp::frame(float window_width, float window_height) {
   menu_bar();
   shortcuts();
+  handle_drops();
   layout(window_width, window_height);
   dialogs();
+  help_.draw();
+  missing_assets_.draw(state_);
+  // Panel sizes are written once a drag ends, not on each of its frames.
+  if (settings_changed_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    std::string error;
+    if (!write_ui_settings(settings_file(), settings_, &error)) state_.log.error(error);
+    settings_changed_ = false;
+  }
   if (state_.want_frame_selected) frame_selected(), state_.want_frame_selected = false;
   if (state_.want_add_mesh) {
     state_.want_add_mesh = false;
@@ -481,10 +552,8 @@ void EditorApp::frame(float window_width, float window_height) {
     file_dialog_.open("Add mesh", FileDialog::Mode::open, {".obj"}, start);
   }
   if (state_.want_node_editor) state_.want_node_editor = false, show_node_editor_ = true;
-  if (state_.want_export) {
-    state_.want_export = false;
-    if (!state_.export_job) start_export();
-  }
+  if (state_.want_export) state_.want_export = false, export_ui_.open_dialog(state_);
+  export_ui_.draw(state_);
   // A drag is one undo step: merging ends when no widget is held.
   if (!ImGui::IsAnyItemActive()) state_.document.end_merge();
   sync_renderer();

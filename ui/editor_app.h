@@ -1,16 +1,20 @@
-// The editor's shell: menu bar, shortcuts, fixed panel layout, dialogs
-// (file, unsaved changes, load errors, crash recovery), and the link between
-// the document and the background renderer. Windowing lives in app/; this
-// draws one ImGui frame at a time.
+// The editor's shell: menu bar, shortcuts, the resizable panel layout, dialogs
+// (file, unsaved changes, load errors, crash recovery, help), dropped files, and the
+// link between the document and the background renderer. Windowing lives in app/;
+// this draws one ImGui frame at a time.
 #pragma once
 
 #include "ui/autosave.h"
 #include "ui/editor_state.h"
+#include "ui/export_dialog.h"
 #include "ui/file_dialog.h"
+#include "ui/help_window.h"
 #include "ui/material_swatches.h"
+#include "ui/missing_assets_panel.h"
 #include "ui/node_editor_panel.h"
 #include "ui/recent_files.h"
 #include "ui/scene_loader.h"
+#include "ui/ui_settings.h"
 #include "ui/viewport_panel.h"
 
 #include <chrono>
@@ -44,10 +48,19 @@ class EditorApp {
     renderer_.wait_for_generation(viewport_->uploaded_generation(), until);
   }
 
+  // Files dropped on the window, handled at the next frame (ui/file_drop.h).
+  void drop(std::vector<std::filesystem::path> files);
+  // The monitor's content scale (GLFW); the UI scale is it times the user's setting.
+  void set_content_scale(float scale) { content_scale_ = scale; }
+  float ui_scale() const { return content_scale_ * settings_.ui_scale; }
+  // The user's interface size (View > Larger/Smaller), saved between runs.
+  void set_ui_scale_setting(float scale);
+
   EditorState& state() { return state_; }
   // View > Node editor: the selected material's nodes below the viewport.
   void show_node_editor(bool show) { show_node_editor_ = show; }
   const NodeEditorPanel& node_editor() const { return node_editor_; }
+  ExportUi& export_ui() { return export_ui_; }
   const ViewportPanel& viewport() const { return *viewport_; }
   const ViewportFrame& viewport_frame() const { return viewport_frame_; }
   ProgressiveRenderer& renderer() { return renderer_; }
@@ -66,6 +79,10 @@ class EditorApp {
   void menu_bar();
   void shortcuts();
   void layout(float width, float height);
+  // Begins a panel window at its place in the layout; a drag of its inner edges resizes the layout.
+  bool begin_panel(const char* name, Panel panel, const PanelRects& placed, int imgui_flags);
+  void handle_drops();
+  void change_ui_scale(float factor);
   void dialogs();
   void sync_renderer();
   void poll_background();
@@ -76,10 +93,10 @@ class EditorApp {
   void finish_open(const std::filesystem::path& file, SceneLoadResult loaded);
   void save(bool choose_file);
   void frame_selected();
-  void start_export();
 
   EditorOptions options_;
   EditorState state_;
+  ExportUi export_ui_;  // after state_: its exports stop before the state they report to goes
   ProgressiveRenderer renderer_;
   std::unique_ptr<ViewportPanel> viewport_;
   ViewportFrame viewport_frame_;
@@ -87,6 +104,13 @@ class EditorApp {
   std::unique_ptr<MaterialSwatches> swatches_;
   bool show_node_editor_ = false;
   FileDialog file_dialog_;
+  HelpWindow help_;
+  MissingAssetsPanel missing_assets_;
+  UiSettings settings_;
+  bool settings_changed_ = false;  // written once the mouse is released, not on every frame of a drag
+  float content_scale_ = 1.f;
+  std::vector<std::filesystem::path> dropped_;
+  std::string drop_problem_, drop_message_;  // why a dropped file could not be used: shown in a dialog
   enum class DialogPurpose { open, save_as, add_mesh } dialog_purpose_ = DialogPurpose::open;
   RecentFiles recent_;
   Autosave autosave_;

@@ -3,7 +3,7 @@
 // into renderer calls once per frame. No window or GL here.
 #pragma once
 
-#include "core/render/export_job.h"
+#include "core/document/edit_checks.h"
 #include "core/render/progressive_renderer.h"
 #include "ui/document.h"
 #include "ui/log.h"
@@ -14,13 +14,7 @@
 namespace inkray {
 
 class MaterialSwatches;  // ui/material_swatches.h: needs GL, so the app owns it
-
-struct ExportSettings {
-  std::string output = "render.png";
-  int spp = 256;
-  float time_limit = 0.f;
-  std::vector<bool> aovs = std::vector<bool>(kAovNames.size(), false);
-};
+class ExportQueue;       // ui/export_queue.h: the app's exports
 
 struct EditorState {
   Document document;
@@ -36,19 +30,42 @@ struct EditorState {
   // Why the newest document cannot render (an unset file, a dangling name), shown over
   // the viewport until a document that renders replaces it.
   std::vector<std::string> render_problems;
-  ExportSettings export_settings;
+  // The properties panel's last refused (or kept but unrenderable) edit: shown in red
+  // beside the field it names until that item is edited again.
+  Selection problem_item;
+  std::string problem_param, problem_message;
+  bool uniform_scale = false;  // the object transform's scale lock
   MaterialSwatches* swatches = nullptr;  // the app's material previews; null without a GL context (tests)
-  std::unique_ptr<ExportJob> export_job;
+  // The app's exports (ui/export_queue.h), for the render panel's status; null until drawn.
+  ExportQueue* exports = nullptr;
 
   // Requests to the app shell, which owns dialogs and the renderer.
   bool want_frame_selected = false;
   bool want_add_mesh = false;
+  bool add_mesh_native_size = false;  // else the mesh is fitted to the view
   bool want_export = false;
   bool want_node_editor = false;  // the properties panel's "Edit nodes"
 
   // Edits go through the document so they can be undone.
   void edit(SceneDesc after, std::string label, std::string merge_key = {}) {
-    document.edit(std::move(after), std::move(label), std::move(merge_key));
+    document.edit(std::move(after), std::move(label), std::move(merge_key), selection);
+  }
+  // A structural edit (add, delete, drop, relink) that is refused, with the reasons in
+  // the log, when it would leave the scene with problems it did not have. Problems are
+  // counted, not matched: deleting an item renumbers the JSON paths of those after it.
+  // *why (when given) gets the reasons too.
+  bool edit_checked(SceneDesc after, const std::string& label, std::string* why = nullptr) {
+    if (scene_problems(after).size() > scene_problems(document.scene()).size()) {
+      std::vector<std::string> added = problems_added(document.scene(), after);
+      if (added.empty()) added.push_back("the scene would not render");
+      for (const std::string& problem : added) {
+        log.warning("cannot " + label + ": " + problem);
+        if (why) *why += (why->empty() ? "" : "\n") + problem;
+      }
+      return false;
+    }
+    edit(std::move(after), label);
+    return true;
   }
 };
 

@@ -2,6 +2,7 @@
 
 #include "core/document/json_io.h"
 #include "core/render/material_preview.h"
+#include "ui/gl_texture.h"
 
 #include <GL/gl.h>
 #include <nlohmann/json.hpp>
@@ -29,14 +30,7 @@ MaterialSwatches::~MaterialSwatches() {
 }
 
 void MaterialSwatches::upload(Swatch& swatch, const ViewportSnapshot& s) {
-  if (!swatch.texture) {
-    glGenTextures(1, &swatch.texture);
-    glBindTexture(GL_TEXTURE_2D, swatch.texture);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
+  if (!swatch.texture) swatch.texture = make_image_texture();
   glBindTexture(GL_TEXTURE_2D, swatch.texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, s.width, s.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, s.rgba.data());
@@ -74,6 +68,7 @@ void MaterialSwatches::update(const SceneDesc& doc, bool hold) {
     // A material that cannot compile never shows an image (the viewport's log says why;
     // a broken graph compiles to its stand-in and does). Move on after a while.
     renderer_.take_messages();
+    renderer_.take_warnings();
     const bool gave_up = std::chrono::steady_clock::now() - submitted_at_ > std::chrono::seconds(10);
     if (!rendering_.empty() && gave_up && (!snapshot || snapshot->revision != revision_)) {
       if (names.count(rendering_)) swatches_[rendering_].key = rendering_key_;

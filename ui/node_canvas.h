@@ -56,6 +56,7 @@ struct NodeMetrics {
   float title = 22.f;  // title bar
   float row = 18.f;    // one socket or setting
   float frame = 16.f;  // a widget's frame within its row
+  float text = 13.f;   // text height: the UI font is scaled to it, whatever the interface size
   float pad = 8.f;     // inner margin left and right
   float pin_radius = 5.5f;
   float char_width = 7.f;

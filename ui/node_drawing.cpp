@@ -1,6 +1,7 @@
 // ImDrawList drawing of nodes, links and the grid, and the widgets inside nodes.
 #include "ui/node_drawing.h"
 
+#include "core/document/param_text.h"
 #include "ui/param_widgets.h"
 
 #include <algorithm>
@@ -18,16 +19,16 @@ constexpr ImU32 kTitleType = IM_COL32(250, 250, 250, 150);
 
 ImVec2 im(Vec2 v) { return ImVec2(v.x, v.y); }
 
-// Text at the canvas zoom: the font's own size times the zoom, whatever the window's scale.
+// Text at the canvas zoom: NodeMetrics::text canvas units, whatever the UI font size.
 void canvas_text(ImDrawList* draw, float zoom, ImVec2 at, ImU32 color, std::string_view text,
                  const ImVec4* clip) {
   ImFont* font = ImGui::GetFont();
-  draw->AddText(font, font->FontSize * zoom, at, color, text.data(), text.data() + text.size(), 0.f, clip);
+  draw->AddText(font, NodeMetrics{}.text * zoom, at, color, text.data(), text.data() + text.size(), 0.f, clip);
 }
 
 float canvas_text_width(float zoom, std::string_view text) {
   ImFont* font = ImGui::GetFont();
-  return font->CalcTextSizeA(font->FontSize * zoom, FLT_MAX, 0.f, text.data(), text.data() + text.size()).x;
+  return font->CalcTextSizeA(NodeMetrics{}.text * zoom, FLT_MAX, 0.f, text.data(), text.data() + text.size()).x;
 }
 
 // A colour as a bar the width of a widget, opening a picker: ImGui's ColorEdit3 squeezes
@@ -38,10 +39,10 @@ bool color_bar(const Param& p, Color& c, float width) {
   if (ImGui::ColorButton("##bar", shown, ImGuiColorEditFlags_NoTooltip,
                          ImVec2(width, ImGui::GetFrameHeight())))
     ImGui::OpenPopup("picker");
-  if (ImGui::IsItemHovered() && !p.doc.empty()) ImGui::SetTooltip("%.*s", int(p.doc.size()), p.doc.data());
+  if (ImGui::IsItemHovered() && !p.doc.empty()) ImGui::SetTooltip("%s", param_tooltip(p, false).c_str());
   ImGui::SameLine(0.f, ImGui::GetStyle().ItemInnerSpacing.x);
   ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted(p.name.data(), p.name.data() + p.name.size());
+  ImGui::TextUnformatted(param_label(p).c_str());
   bool changed = false;
   if (ImGui::BeginPopup("picker")) {
     ImGui::SetWindowFontScale(1.f);  // the picker is a window of its own, at the normal size
@@ -81,8 +82,8 @@ struct RowWidgets {
     const bool socket = socket_type_of(p.kind).has_value();
     const bool is_linked = socket && std::find(linked.begin(), linked.end(), p.name) != linked.end();
     if (is_linked || !widgets) {
-      const float text_y = top.y + (m.row * z - ImGui::GetFont()->FontSize * z) * 0.5f;
-      canvas_text(draw, z, ImVec2(top.x, text_y), kLabel, p.name, &clip);
+      const float text_y = top.y + (m.row - m.text) * z * 0.5f;
+      canvas_text(draw, z, ImVec2(top.x, text_y), kLabel, param_label(p), &clip);
       return;
     }
     const float inset = (m.row - m.frame) * 0.5f * z;
@@ -145,7 +146,7 @@ void draw_link(ImDrawList* draw, const CanvasView& view, const Bezier& curve, Im
 
 NodeDrawResult draw_node(ImDrawList* draw, const CanvasView& view, const GraphNodeDesc& node,
                          const NodeBox& box, const std::vector<std::string_view>& linked_inputs,
-                         bool selected, bool widgets) {
+                         bool selected, bool widgets, const SceneDesc& scene) {
   const NodeMetrics m;
   const float z = view.zoom;
   const ImVec2 a = im(to_screen(view, box.rect.min)), b = im(to_screen(view, box.rect.max));
@@ -154,7 +155,7 @@ NodeDrawResult draw_node(ImDrawList* draw, const CanvasView& view, const GraphNo
   draw->AddRectFilled(a, ImVec2(b.x, a.y + m.title * z), category_color(node_category(node.data)), rounding,
                       ImDrawFlags_RoundCornersTop);
   const ImVec4 clip(a.x, a.y, b.x - m.pad * 0.5f * z, b.y);
-  const float font = ImGui::GetFont()->FontSize * z;
+  const float font = m.text * z;
   const float title_y = a.y + (m.title * z - font) * 0.5f;
   // The id names the node in links and messages; the type says what it is.
   canvas_text(draw, z, ImVec2(a.x + m.pad * z, title_y), kTitle, node.id, &clip);
@@ -189,6 +190,7 @@ NodeDrawResult draw_node(ImDrawList* draw, const CanvasView& view, const GraphNo
       [&](auto& settings) {
         RowWidgets rw{box, linked_inputs,      view, draw, clip, first_param, widgets, m, {}, false,
                       {},  &result.row_heights};
+        rw.generated.scene = &scene;  // an image node's browse button starts in the scene's folder
         visit_params(settings, rw);
         result.changed = rw.generated.changed || rw.bar_changed;
         result.changed_param = rw.bar_changed ? rw.bar_param : rw.generated.changed_param;

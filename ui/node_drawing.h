@@ -29,8 +29,9 @@ struct NodeDrawResult {
 
 // Draws one node as laid out in `box`. Widgets are drawn only when `widgets` (they
 // are unreadable when zoomed far out); rows of linked inputs show their name alone.
+// `scene` gives path fields its folder.
 NodeDrawResult draw_node(ImDrawList* draw, const CanvasView& view, const GraphNodeDesc& node,
                          const NodeBox& box, const std::vector<std::string_view>& linked_inputs,
-                         bool selected, bool widgets);
+                         bool selected, bool widgets, const SceneDesc& scene);
 
 }  // namespace inkray

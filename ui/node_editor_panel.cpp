@@ -281,8 +281,8 @@ void NodeEditorPanel::draw_canvas(EditorState& state) {
   // frame and its row are NodeMetrics' 16 and 18 units at any zoom.
   const float z = view_.zoom;
   const NodeMetrics metrics;
-  const float frame_pad = (metrics.frame - ImGui::GetFont()->FontSize) * 0.5f;
-  ImGui::SetWindowFontScale(z);
+  const float frame_pad = (metrics.frame - metrics.text) * 0.5f;
+  ImGui::SetWindowFontScale(z * metrics.text / ImGui::GetFont()->FontSize);
   ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4.f * z, frame_pad * z));
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(4.f * z, (metrics.row - metrics.frame) * z));
   ImGui::PushStyleVar(ImGuiStyleVar_ItemInnerSpacing, ImVec2(4.f * z, 4.f * z));
@@ -295,7 +295,7 @@ void NodeEditorPanel::draw_canvas(EditorState& state) {
     for (const GraphLinkDesc& l : graph_.links)
       if (l.to == node.id) linked.push_back(l.input);
     const bool selected = std::find(selected_.begin(), selected_.end(), node.id) != selected_.end();
-    NodeDrawResult r = draw_node(draw, view_, node, boxes[i], linked, selected, z >= 0.5f);
+    NodeDrawResult r = draw_node(draw, view_, node, boxes[i], linked, selected, z >= 0.5f, state.document.scene());
     if (z >= 0.5f) row_heights_[node.id] = r.row_heights;
     if (r.changed) edited = std::move(r), edited_id = node.id;
   }

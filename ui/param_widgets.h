@@ -1,11 +1,14 @@
 // The editor's widgets, generated from the parameter lists (docs/architecture.md,
-// "The shape"): a visitor over visit_params that draws one ImGui widget per Param, with its
-// range and doc as a tooltip, and records which parameter changed.
+// "The shape"): a visitor over visit_params that draws one ImGui widget per Param
+// with its label, slider range and plain-text tooltip (core/document/param_text.h),
+// and records which parameter changed. References are combos of the scene's names,
+// paths a field with a browse button (path_field.h).
 #pragma once
 
 #include "core/document/desc.h"
 
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -13,8 +16,19 @@
 namespace inkray {
 
 struct ParamWidgets {
+  // Context, set by the caller: where reference names and the scene's folder come
+  // from (null: references are typed, paths resolve against the working directory),
+  // the name a material reference must not take (a mix's own), and a problem to show
+  // in red beside the parameter it names (a path like changed_param).
+  const SceneDesc* scene = nullptr;
+  std::string_view self_name;
+  std::string problem_param, problem_message;
+
   bool changed = false;
-  std::string changed_param;  // name of the last changed parameter: the undo merge key
+  // The last changed parameter, with the groups it is in ("silhouette.width"): the
+  // undo merge key.
+  std::string changed_param;
+  bool changed_typed = false;  // it was typed text (a name or a path), kept while typing
 
   void operator()(const Param& p, float& v);
   void operator()(const Param& p, int& v);
@@ -36,7 +50,7 @@ struct ParamWidgets {
   void operator()(const Param& p, std::vector<T>& items) {
     if (!begin_group(p)) return;
     for (size_t i = 0; i < items.size(); ++i) {
-      push_item(int(i));
+      push_item(p, int(i));
       visit_params(items[i], *this);
       if (remove_button()) {
         items.erase(items.begin() + long(i));
@@ -62,21 +76,29 @@ struct ParamWidgets {
 
  private:
   bool choice_widget(const Param& p, int* index);
+  bool reference_widget(const Param& p, std::string* value);
   bool begin_group(const Param& p);
   void end_group();
-  void push_item(int index);
+  void push_item(const Param& p, int index);
   void pop_item();
   bool remove_button();
   bool add_button();
+  // The tooltip and, when it names this parameter, the problem in red.
+  void finish(const Param& p, bool typed_value);
   void note(const Param& p) {
     changed = true;
-    changed_param = p.name;
+    changed_param = path_ + std::string(p.name);
+    changed_typed = p.kind == ParamKind::text || p.kind == ParamKind::path;
   }
+
+  std::string path_;         // "group." prefixes of the parameters being drawn
+  bool unlabelled_ = false;  // a colour input's constant, named by its type row
+  std::vector<size_t> path_lengths_;
 };
 
+// Widgets for a struct's parameter list, in the context `widgets` carries.
 template <class Desc>
-bool edit_params(Desc& desc, std::string* changed_param = nullptr) {
-  ParamWidgets widgets;
+bool edit_params(Desc& desc, std::string* changed_param = nullptr, ParamWidgets widgets = {}) {
   visit_params(desc, widgets);
   if (changed_param && widgets.changed) *changed_param = widgets.changed_param;
   return widgets.changed;
@@ -101,21 +123,24 @@ bool edit_variant_type(const char* label, Variant& value) {
   std::vector<std::string_view> names;
   [&]<size_t... I>(std::index_sequence<I...>) {
     (names.push_back(alternative_name<std::variant_alternative_t<I, Variant>>()), ...);
-  }(std::make_index_sequence<std::variant_size_v<Variant>>());
+  }
+  (std::make_index_sequence<std::variant_size_v<Variant>>());
   int index = int(value.index());
   if (!variant_type_combo_impl(label, names, &index)) return false;
   [&]<size_t... I>(std::index_sequence<I...>) {
     ((index == int(I) ? (value = std::variant_alternative_t<I, Variant>{}, 0) : 0), ...);
-  }(std::make_index_sequence<std::variant_size_v<Variant>>());
+  }
+  (std::make_index_sequence<std::variant_size_v<Variant>>());
   return true;
 }
 
 // Type combo plus the alternative's parameters.
 template <class Variant>
-bool edit_tagged(const char* label, Variant& value, std::string* changed_param) {
+bool edit_tagged(const char* label, Variant& value, std::string* changed_param,
+                 const ParamWidgets& widgets = {}) {
   bool changed = edit_variant_type(label, value);
   if (changed && changed_param) *changed_param = "type";
-  std::visit([&](auto& alternative) { changed |= edit_params(alternative, changed_param); }, value);
+  std::visit([&](auto& alternative) { changed |= edit_params(alternative, changed_param, widgets); }, value);
   return changed;
 }
 

@@ -1,12 +1,15 @@
-#include "core/document/graph_edit.h"
 #include "ui/properties_panel.h"
 
+#include "core/document/graph_edit.h"
+#include "core/document/edit_checks.h"
+#include "core/document/param_text.h"
 #include "ui/param_widgets.h"
 #include "ui/scene_edits.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,15 +28,100 @@ std::string merge_key(const Selection& s, const std::string& param) {
   return std::to_string(int(s.kind)) + ":" + std::to_string(s.index) + ":" + param;
 }
 
-// Commits an edited copy of a named item. A changed name is applied with
-// rename_item so references to it follow; a taken name is refused.
+// The widgets' context for one item: the scene's names and folder, and that item's
+// last problem, shown beside its field.
+ParamWidgets widgets_for(const EditorState& state, const Selection& item, std::string_view self_name = {}) {
+  ParamWidgets widgets;
+  widgets.scene = &state.document.scene();
+  widgets.self_name = self_name;
+  if (state.problem_item == item) {
+    widgets.problem_param = state.problem_param;
+    widgets.problem_message = state.problem_message;
+  }
+  return widgets;
+}
+
+// The problem of a field drawn here rather than by the generated widgets.
+void problem_beside(const EditorState& state, const Selection& item, std::string_view param) {
+  if (state.problem_item != item || state.problem_param != param || state.problem_message.empty()) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.35f, 0.3f, 1.f));
+  ImGui::PushTextWrapPos(0.f);
+  ImGui::TextUnformatted(state.problem_message.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
+}
+
+// What the generated widgets of one struct changed.
+struct Edited {
+  bool changed = false;
+  bool typed = false;  // typed text: a name or a path
+  std::string param;
+  Edited& operator|=(const Edited& later) {
+    if (later.changed) *this = later;
+    return *this;
+  }
+};
+
+template <class Desc>
+Edited edit_item(Desc& desc, ParamWidgets widgets) {
+  visit_params(desc, widgets);
+  return {widgets.changed, widgets.changed_typed, widgets.changed_param};
+}
+
+// A tagged variant's type combo and its alternative's widgets.
+template <class Variant>
+Edited edit_tagged_item(EditorState& state, const Selection& sel, const char* label, Variant& value) {
+  Edited edited;
+  if (edit_variant_type(label, value)) edited = {true, false, "type"};
+  problem_beside(state, sel, "type");
+  std::visit([&](auto& alternative) { edited |= edit_item(alternative, widgets_for(state, sel)); }, value);
+  return edited;
+}
+
+void set_problem(EditorState& state, const Selection& item, const std::string& param, std::string message) {
+  state.problem_item = item;
+  state.problem_param = param;
+  state.problem_message = std::move(message);
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += (text.empty() ? "" : "\n") + line;
+  return text;
+}
+
+// Every edit of the panel ends here. One that would make the scene unrenderable is
+// refused, with the reason beside its field; typed text (a name, a path) is kept,
+// since typing passes through such states, and the reason shows until it is mended.
+void commit(EditorState& state, const Selection& item, SceneDesc after, const std::string& param,
+            bool typed) {
+  const std::vector<std::string> added = problems_added(state.document.scene(), after);
+  if (!added.empty() && !typed) {
+    set_problem(state, item, param, "Not applied: " + joined(added));
+    return;
+  }
+  if (added.empty()) {
+    if (state.problem_item == item) set_problem(state, {}, {}, {});
+  } else {
+    set_problem(state, item, param, joined(added));
+  }
+  state.edit(std::move(after), "Edit " + param, merge_key(item, param));
+}
+
+// The document with an edited copy of a named item. A changed name is applied with
+// rename_item so references to it follow; an empty or taken name keeps the old one.
 template <class T>
-void commit_named(EditorState& state, const Selection& sel, std::vector<T> SceneDesc::*list, T edited,
-                  const std::string& param) {
+std::optional<SceneDesc> with_named(EditorState& state, const Selection& sel, std::vector<T> SceneDesc::*list,
+                                    T edited, const std::string& param) {
   SceneDesc scene = state.document.scene();
   const std::string old_name = (scene.*list)[size_t(sel.index)].name;
   if (edited.name != old_name) {
-    if (!rename_item(scene, sel, edited.name)) return;  // empty or taken: keep the old name
+    if (!rename_item(scene, sel, edited.name)) {
+      set_problem(state, sel, param,
+                  edited.name.empty() ? "Not applied: a name cannot be empty"
+                                      : "Not applied: the name " + in_quotes(edited.name) + " is taken");
+      return std::nullopt;
+    }
     // Renaming rewrites references inside the edited item too (a material's own mix inputs).
     edited.name = (scene.*list)[size_t(sel.index)].name;
   }
@@ -41,101 +129,82 @@ void commit_named(EditorState& state, const Selection& sel, std::vector<T> Scene
     edited.name = (scene.*list)[size_t(sel.index)].name;
   }
   (scene.*list)[size_t(sel.index)] = std::move(edited);
-  state.edit(std::move(scene), "Edit " + param, merge_key(sel, param));
-}
-
-// Generated widgets, except that names referring to other items (a mix's materials,
-// an emitter's object) are combos of the names that exist rather than typed text.
-using References = std::vector<std::pair<std::string_view, std::vector<std::string>>>;  // parameter -> names
-
-struct ReferenceWidgets {
-  References references;
-  ParamWidgets widgets;
-
-  template <class F>
-  void operator()(const Param& p, F& value) {
-    widgets(p, value);
-  }
-  void operator()(const Param& p, std::string& value) {
-    const auto it =
-        std::find_if(references.begin(), references.end(), [&](const auto& r) { return r.first == p.name; });
-    if (it == references.end()) return widgets(p, value);
-    const std::string label(p.name);
-    if (ImGui::BeginCombo(label.c_str(), value.empty() ? "(none)" : value.c_str())) {
-      for (const std::string& name : it->second) {
-        if (ImGui::Selectable(name.c_str(), name == value) && name != value) {
-          value = name;
-          widgets.changed = true;
-          widgets.changed_param = label;
-        }
-      }
-      ImGui::EndCombo();
-    }
-    if (ImGui::IsItemHovered() && !p.doc.empty()) ImGui::SetTooltip("%.*s", int(p.doc.size()), p.doc.data());
-  }
-};
-
-template <class Desc>
-bool edit_with_references(Desc& desc, References references, std::string* param) {
-  ReferenceWidgets widgets;
-  widgets.references = std::move(references);
-  visit_params(desc, widgets);
-  if (widgets.widgets.changed) *param = widgets.widgets.changed_param;
-  return widgets.widgets.changed;
+  return scene;
 }
 
 template <class T>
-std::vector<std::string> names_of(const std::vector<T>& items, std::string_view except = {}) {
-  std::vector<std::string> names;
-  for (const T& item : items)
-    if (item.name != except) names.push_back(item.name);
-  return names;
+void commit_named(EditorState& state, const Selection& sel, std::vector<T> SceneDesc::*list, T edited,
+                  const std::string& param, bool typed) {
+  if (auto scene = with_named(state, sel, list, std::move(edited), param))
+    commit(state, sel, std::move(*scene), param, typed);
 }
 
-bool edit_emitter(const SceneDesc& scene, StrokeEmitterDesc& emitter, std::string* param) {
-  return edit_with_references(emitter, {{"object", names_of(scene.objects)}}, param);
+// A name field: typed text, its problem beside it.
+bool edit_name(EditorState& state, const Selection& sel, std::string& name, std::string_view doc) {
+  ParamWidgets widgets = widgets_for(state, sel);
+  widgets(text("name", doc), name);
+  return widgets.changed;
 }
 
 // The material's type and settings; a graph's nodes are the node editor's.
-bool edit_material_data(EditorState& state, MaterialDesc& m, std::string* param) {
+Edited edit_material_data(EditorState& state, const Selection& sel, MaterialDesc& m) {
   const MaterialVariant before = m.data;
-  bool changed = edit_variant_type("type", m.data);
-  if (changed) *param = "type";
+  Edited edited;
+  if (edit_variant_type("Type###type", m.data)) edited = {true, false, "type"};
+  problem_beside(state, sel, "type");
   // Turning a material into a graph keeps its look: it becomes that material's closure node.
-  if (changed && std::holds_alternative<GraphDesc>(m.data)) m.data = graph_from_material(before);
-  const SceneDesc& scene = state.document.scene();
+  if (edited.changed && std::holds_alternative<GraphDesc>(m.data)) m.data = graph_from_material(before);
   std::visit(
       [&]<class T>(T& data) {
         if constexpr (std::is_same_v<T, GraphDesc>) {
           ImGui::TextDisabled("%zu nodes, %zu links", data.nodes.size(), data.links.size());
-        } else if constexpr (std::is_same_v<T, MixDesc>) {
-          // A mix of itself would be a cycle.
-          const std::vector<std::string> others = names_of(scene.materials, m.name);
-          changed |= edit_with_references(data, {{"a", others}, {"b", others}}, param);
         } else {
-          changed |= edit_params(data, param);
+          // A mix offers the other materials: one of itself would be a cycle.
+          edited |= edit_item(data, widgets_for(state, sel, m.name));
         }
       },
       m.data);
   if (ImGui::Button("Edit nodes")) state.want_node_editor = true;
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Open the node editor on this material (a plain one becomes a graph at the first edit)");
-  return changed;
+    ImGui::SetTooltip(
+        "Open the node editor on this material (a plain one becomes a graph at the first edit)");
+  return edited;
 }
 
-bool edit_transform(TransformDesc& t, std::string* param) {
-  bool changed = false;
-  // Within what the reader accepts: positions in +-kMaxCoordinate, no zero scale factor.
-  const float reach = float(kMaxCoordinate);
-  if (ImGui::DragFloat3("translate", &t.translate.x, 0.01f, -reach, reach, "%.3f")) changed = true, *param = "translate";
-  Vec3 scale = t.scale;
-  if (ImGui::DragFloat3("scale", &scale.x, 0.01f, -reach, reach, "%.3f") && scale.x != 0.f && scale.y != 0.f &&
-      scale.z != 0.f)
-    t.scale = scale, changed = true, *param = "scale";
+// Scale with a lock: locked, editing one component scales all three alike (param_text.h).
+bool edit_scale(EditorState& state, const Selection& sel, Vec3& scale, std::string* param) {
+  static constexpr Param kScale =
+      vector("scale", "Scale along the object's own axes, applied first").labelled("Scale");
+  Vec3 edited = scale;
+  ParamWidgets widgets = widgets_for(state, sel);
+  widgets(kScale, edited);
+  ImGui::Checkbox("Uniform scale", &state.uniform_scale);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Locked: editing one component scales all three proportionally");
+  if (!widgets.changed) return false;
+  if (state.uniform_scale) edited = locked_scale(scale, edited);
+  // No zero factor: the reader refuses it, and a flat object cannot be scaled back.
+  if (edited.x == 0.f || edited.y == 0.f || edited.z == 0.f || edited == scale) return false;
+  for (int i = 0; i < 3; ++i)
+    edited[i] = std::clamp(edited[i], -float(kMaxCoordinate), float(kMaxCoordinate));
+  scale = edited;
+  *param = "scale";
+  return true;
+}
+
+bool edit_transform(EditorState& state, const Selection& sel, TransformDesc& t, std::string* param) {
+  static constexpr Param kTranslate =
+      vector("translate", "Moves the object, applied last").labelled("Position");
+  ParamWidgets translate = widgets_for(state, sel);
+  translate(kTranslate, t.translate);
+  bool changed = translate.changed;
+  if (changed) *param = "translate";
+  changed |= edit_scale(state, sel, t.scale, param);
   for (size_t i = 0; i < t.rotate.size(); ++i) {
     ImGui::PushID(int(i));
     std::string rotation_param;
-    if (edit_params(t.rotate[i], &rotation_param)) changed = true, *param = "rotate" + std::to_string(i) + rotation_param;
+    if (edit_params(t.rotate[i], &rotation_param, widgets_for(state, sel)))
+      changed = true, *param = "rotate" + std::to_string(i) + rotation_param;
     if (ImGui::SmallButton("remove rotation")) {
       t.rotate.erase(t.rotate.begin() + long(i));
       changed = true, *param = "rotate-remove";
@@ -148,58 +217,54 @@ bool edit_transform(TransformDesc& t, std::string* param) {
   return changed;
 }
 
-void material_combo(const SceneDesc& scene, std::string& material, bool* changed, std::string* param) {
-  if (!ImGui::BeginCombo("material", material.c_str())) return;
-  for (const MaterialDesc& m : scene.materials) {
-    if (ImGui::Selectable(m.name.c_str(), m.name == material) && m.name != material) {
-      material = m.name;
-      *changed = true;
-      *param = "material";
-    }
-  }
-  ImGui::EndCombo();
-}
-
 void material_section(EditorState& state, int index) {
-  const SceneDesc& scene = state.document.scene();
   const Selection sel{ItemKind::material, index};
-  MaterialDesc m = scene.materials[size_t(index)];
-  std::string param;
-  bool changed = false;
+  MaterialDesc m = state.document.scene().materials[size_t(index)];
   ImGui::PushID("material");
-  ParamWidgets name_widget;
-  name_widget(text("name", "Unique material name"), m.name);
-  if (name_widget.changed) changed = true, param = "name";
-  changed |= edit_material_data(state, m, &param);
-  if (ImGui::TreeNode("outline overrides")) {
-    changed |= edit_params(m.lines, &param);
+  Edited edited;
+  if (edit_name(state, sel, m.name, "Unique material name")) edited = {true, true, "name"};
+  edited |= edit_material_data(state, sel, m);
+  if (ImGui::TreeNode("Outline overrides")) {
+    edited |= edit_item(m.lines, widgets_for(state, sel));
     ImGui::TreePop();
   }
   ImGui::PopID();
-  if (changed) commit_named(state, sel, &SceneDesc::materials, std::move(m), param);
+  if (!edited.changed) return;
+  std::optional<SceneDesc> scene = with_named(state, sel, &SceneDesc::materials, std::move(m), edited.param);
+  if (!scene) return;
+  // A new mix needs two inputs to be valid at once: it gets them (param_text.h).
+  if (edited.param == "type") give_mix_inputs(*scene, size_t(index));
+  commit(state, sel, std::move(*scene), edited.param, edited.typed);
 }
+
+// The object's own parameters but its outline overrides, which come last.
+struct WithoutGroups {
+  ParamWidgets& widgets;
+  template <class F>
+  void operator()(const Param& p, F& field) {
+    if (p.kind != ParamKind::group) widgets(p, field);
+  }
+};
 
 void object_section(EditorState& state, int index) {
   const SceneDesc& scene = state.document.scene();
   const Selection sel{ItemKind::object, index};
   ObjectDesc o = scene.objects[size_t(index)];
-  std::string param;
-  bool changed = false;
-  ParamWidgets name_widget;
-  name_widget(text("name", "Unique object name"), o.name);
-  if (name_widget.changed) changed = true, param = "name";
-  material_combo(scene, o.material, &changed, &param);
-  if (ImGui::Checkbox("visible", &o.visible)) changed = true, param = "visible";
+  ParamWidgets own = widgets_for(state, sel);
+  WithoutGroups top{own};
+  visit_params(o, top);
+  Edited edited{own.changed, own.changed_typed, own.changed_param};
   section_title("Transform");
-  changed |= edit_transform(o.transform, &param);
+  std::string transform_param;
+  if (edit_transform(state, sel, o.transform, &transform_param)) edited = {true, false, transform_param};
   section_title("Shape");
-  changed |= edit_tagged("shape", o.shape, &param);
-  if (ImGui::TreeNode("outline overrides")) {
-    changed |= edit_params(o.lines, &param);
+  edited |= edit_tagged_item(state, sel, "Shape###shape", o.shape);
+  if (ImGui::TreeNode("Outline overrides")) {
+    edited |= edit_item(o.lines, widgets_for(state, sel));
     ImGui::TreePop();
   }
-  if (changed) {
-    commit_named(state, sel, &SceneDesc::objects, std::move(o), param);
+  if (edited.changed) {
+    commit_named(state, sel, &SceneDesc::objects, std::move(o), edited.param, edited.typed);
     return;
   }
   // The object's material, so the look can be tuned without leaving the object.
@@ -214,10 +279,13 @@ void object_section(EditorState& state, int index) {
     if (scene.strokes[size_t(e)].object != scene.objects[size_t(index)].name) continue;
     ImGui::PushID(e);
     section_title(("Strokes: " + scene.strokes[size_t(e)].name).c_str());
+    const Selection emitter_sel{ItemKind::emitter, e};
     StrokeEmitterDesc emitter = scene.strokes[size_t(e)];
-    std::string emitter_param;
-    if (edit_emitter(scene, emitter, &emitter_param)) {
-      commit_named(state, {ItemKind::emitter, e}, &SceneDesc::strokes, std::move(emitter), emitter_param);
+    ParamWidgets widgets = widgets_for(state, emitter_sel);
+    visit_params(emitter, widgets);
+    if (widgets.changed) {
+      commit_named(state, emitter_sel, &SceneDesc::strokes, std::move(emitter), widgets.changed_param,
+                   widgets.changed_typed);
       ImGui::PopID();
       return;
     }
@@ -228,18 +296,18 @@ void object_section(EditorState& state, int index) {
 // Singletons (camera, render settings, outlines, environment) have no name to keep consistent.
 template <class T>
 void singleton_section(EditorState& state, ItemKind kind, T SceneDesc::*member) {
+  const Selection sel{kind, -1};
   T value = state.document.scene().*member;
-  std::string param;
-  bool changed;
+  Edited edited;
   if constexpr (requires { std::variant_size<T>::value; }) {
-    changed = edit_tagged("type", value, &param);
+    edited = edit_tagged_item(state, sel, "Type###type", value);
   } else {
-    changed = edit_params(value, &param);
+    edited = edit_item(value, widgets_for(state, sel));
   }
-  if (changed) {
+  if (edited.changed) {
     SceneDesc scene = state.document.scene();
     scene.*member = std::move(value);
-    state.edit(std::move(scene), "Edit " + param, merge_key({kind, -1}, param));
+    commit(state, sel, std::move(scene), edited.param, edited.typed);
   }
 }
 
@@ -254,32 +322,47 @@ void draw_properties_panel(EditorState& state) {
   }
   ImGui::Text("%s", item_name(scene, sel).c_str());
   ImGui::Separator();
-  ImGui::PushItemWidth(-130.f);
+  // Room for the longest labels ("Specular colour") at any interface size.
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.f);
   switch (sel.kind) {
-    case ItemKind::camera: singleton_section(state, sel.kind, &SceneDesc::camera); break;
-    case ItemKind::render: singleton_section(state, sel.kind, &SceneDesc::render); break;
-    case ItemKind::outlines: singleton_section(state, sel.kind, &SceneDesc::outlines); break;
-    case ItemKind::environment: singleton_section(state, sel.kind, &SceneDesc::environment); break;
-    case ItemKind::object: object_section(state, sel.index); break;
-    case ItemKind::material: material_section(state, sel.index); break;
+    case ItemKind::camera:
+      singleton_section(state, sel.kind, &SceneDesc::camera);
+      break;
+    case ItemKind::render:
+      singleton_section(state, sel.kind, &SceneDesc::render);
+      break;
+    case ItemKind::outlines:
+      singleton_section(state, sel.kind, &SceneDesc::outlines);
+      break;
+    case ItemKind::environment:
+      singleton_section(state, sel.kind, &SceneDesc::environment);
+      break;
+    case ItemKind::object:
+      object_section(state, sel.index);
+      break;
+    case ItemKind::material:
+      material_section(state, sel.index);
+      break;
     case ItemKind::light: {
       LightDesc light = scene.lights[size_t(sel.index)];
-      std::string param;
-      ParamWidgets name_widget;
-      name_widget(text("name", "Light name"), light.name);
-      bool changed = name_widget.changed;
-      if (changed) param = "name";
-      changed |= edit_tagged("type", light.data, &param);
-      if (changed) commit_named(state, sel, &SceneDesc::lights, std::move(light), param);
+      Edited edited;
+      if (edit_name(state, sel, light.name, "Light name")) edited = {true, true, "name"};
+      edited |= edit_tagged_item(state, sel, "Type###type", light.data);
+      if (edited.changed)
+        commit_named(state, sel, &SceneDesc::lights, std::move(light), edited.param, edited.typed);
       break;
     }
     case ItemKind::emitter: {
       StrokeEmitterDesc emitter = scene.strokes[size_t(sel.index)];
-      std::string param;
-      if (edit_emitter(scene, emitter, &param)) commit_named(state, sel, &SceneDesc::strokes, std::move(emitter), param);
+      ParamWidgets widgets = widgets_for(state, sel);
+      visit_params(emitter, widgets);
+      if (widgets.changed)
+        commit_named(state, sel, &SceneDesc::strokes, std::move(emitter), widgets.changed_param,
+                     widgets.changed_typed);
       break;
     }
-    case ItemKind::none: break;
+    case ItemKind::none:
+      break;
   }
   ImGui::PopItemWidth();
 }

@@ -1,6 +1,6 @@
-// Render settings and export: the document's resolution, samples and depth,
-// the viewport's limits (samples, time, noise target), and "Export render..."
-// which renders the current document in the background to PNG/EXR with AOVs.
+// Render settings and export: the document's resolution, samples and depth, the
+// viewport's limits (samples, time, noise target), and "Export..." (the dialog is
+// ui/export_dialog.h) with the export queue's status. Columns stack when narrow.
 #pragma once
 
 #include "ui/editor_state.h"

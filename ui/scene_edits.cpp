@@ -1,8 +1,13 @@
 #include "ui/scene_edits.h"
 
 #include "core/compiler/compile_objects.h"
+#include "core/geometry/obj_loader.h"
+#include "ui/placement.h"
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
 #include <vector>
 
 namespace inkray {
@@ -33,10 +38,11 @@ std::string ensure_default_material(SceneDesc& scene) {
   return std::string(kDefaultMaterial);
 }
 
-Selection add_object(SceneDesc& scene, std::string_view base, ShapeVariant shape) {
+Selection add_object(SceneDesc& scene, std::string_view base, ShapeVariant shape, TransformDesc transform) {
   ObjectDesc object;
   object.name = unique_name(scene, ItemKind::object, base);
   object.shape = std::move(shape);
+  object.transform = std::move(transform);
   object.material = ensure_default_material(scene);
   scene.objects.push_back(std::move(object));
   return {ItemKind::object, int(scene.objects.size()) - 1};
@@ -69,16 +75,29 @@ std::string unique_name(const SceneDesc& scene, ItemKind kind, std::string_view 
 }
 
 Selection add_shape(SceneDesc& scene, NewShape shape) {
+  // Shapes are built about their local origin and moved by their transform, so the
+  // gizmo's pivot and the object's origin coincide.
+  const Placement at = place_in_view(scene);
+  // Each fits the placement's sphere: the box by its corners, the quad by its own.
+  const float r = 0.5f * at.size;
+  TransformDesc transform;
+  transform.translate = at.center;
   switch (shape) {
-    case NewShape::sphere: return add_object(scene, "sphere", SphereDesc{Point3(0.f, 1.f, 0.f), 1.f});
-    case NewShape::quad:
-      return add_object(scene, "quad", QuadDesc{Point3(-1.f, 0.f, 1.f), Vec3(2.f, 0.f, 0.f), Vec3(0.f, 0.f, -2.f)});
-    case NewShape::box: return add_object(scene, "box", BoxDesc{Point3(-0.5f, 0.f, -0.5f), Point3(0.5f, 1.f, 0.5f)});
+    case NewShape::sphere: return add_object(scene, "sphere", SphereDesc{Point3(0.f), r}, transform);
+    case NewShape::quad: {
+      const float h = r / std::sqrt(2.f);
+      const QuadDesc quad{Point3(-h, 0.f, h), Vec3(2.f * h, 0.f, 0.f), Vec3(0.f, 0.f, -2.f * h)};
+      return add_object(scene, "quad", quad, transform);
+    }
+    case NewShape::box: {
+      const float h = r / std::sqrt(3.f);
+      return add_object(scene, "box", BoxDesc{Point3(-h), Point3(h)}, transform);
+    }
   }
   return {};
 }
 
-Selection add_mesh(SceneDesc& scene, const std::string& obj_path) {
+Selection add_mesh(SceneDesc& scene, const std::string& obj_path, bool keep_native_size) {
   std::filesystem::path p(obj_path);
   std::string stored = obj_path;
   if (!scene.base_dir.empty() && p.is_absolute()) {
@@ -87,14 +106,36 @@ Selection add_mesh(SceneDesc& scene, const std::string& obj_path) {
     const std::filesystem::path rel = std::filesystem::relative(p, scene.base_dir, ec);
     if (!ec && !rel.empty()) stored = rel.generic_string();
   }
+  TransformDesc transform;
+  if (!keep_native_size) {
+    const Placement at = place_in_view(scene, kNewMeshFraction);
+    std::string error;
+    const auto mesh = load_obj(p.is_absolute() || scene.base_dir.empty() ? p : scene.base_dir / p, &error);
+    if (mesh && !mesh->positions.empty()) {
+      Point3 lo = mesh->positions[0], hi = lo;
+      for (const Point3& v : mesh->positions) lo = glm::min(lo, v), hi = glm::max(hi, v);
+      transform = fit_bounds(lo, hi, at);
+    } else {
+      transform.translate = at.center;
+    }
+  }
   const std::string stem = p.stem().string();
-  return add_object(scene, stem.empty() ? "mesh" : stem, MeshDesc{stored});
+  return add_object(scene, stem.empty() ? "mesh" : stem, MeshDesc{stored}, transform);
 }
 
 Selection add_point_light(SceneDesc& scene) {
   LightDesc light;
   light.name = unique_name(scene, ItemKind::light, "light");
-  light.data = PointLightDesc{Point3(0.f, 3.f, 2.f), Color(1.f), 10.f};
+  // Above the camera's target, as bright there as the first default light (10 at 3
+  // units) was, so a scene in millimetres gets a light that shows.
+  const CameraDesc& c = scene.camera;
+  const float distance = glm::length(c.look_at - c.look_from);
+  const Vec3 forward = distance > 0.f ? (c.look_at - c.look_from) / distance : Vec3(0.f, 0.f, -1.f);
+  Vec3 up = c.up - forward * glm::dot(c.up, forward);
+  up = glm::length(up) > 1e-6f ? glm::normalize(up) : Vec3(0.f, 1.f, 0.f);
+  const float lift = 0.3f * visible_height(c, distance);
+  const float intensity = 10.f * (lift / 3.f) * (lift / 3.f);
+  light.data = PointLightDesc{c.look_at + up * lift, Color(1.f), std::max(intensity, 1e-6f)};
   scene.lights.push_back(std::move(light));
   return {ItemKind::light, int(scene.lights.size()) - 1};
 }
@@ -183,36 +224,43 @@ bool set_visible(SceneDesc& scene, const Selection& item, bool visible) {
   return true;
 }
 
-void object_bounds(const ObjectDesc& object, Point3* center, float* radius) {
-  std::vector<Point3> corners;
+void local_bounds(const ObjectDesc& object, Point3* lo, Point3* hi) {
+  *lo = Point3(-1.f), *hi = Point3(1.f);  // meshes: their extent is in the OBJ file
   std::visit(
       [&](const auto& shape) {
         using T = std::decay_t<decltype(shape)>;
-        Point3 lo(-1.f), hi(1.f);  // meshes: their extent is in the OBJ file
         if constexpr (std::is_same_v<T, SphereDesc>) {
-          lo = shape.center - Vec3(shape.radius);
-          hi = shape.center + Vec3(shape.radius);
+          *lo = shape.center - Vec3(shape.radius);
+          *hi = shape.center + Vec3(shape.radius);
         } else if constexpr (std::is_same_v<T, QuadDesc>) {
           const Point3 pts[4] = {shape.corner, shape.corner + shape.edge_u, shape.corner + shape.edge_v,
                                  shape.corner + shape.edge_u + shape.edge_v};
-          lo = hi = pts[0];
-          for (const Point3& p : pts) lo = glm::min(lo, p), hi = glm::max(hi, p);
+          *lo = *hi = pts[0];
+          for (const Point3& p : pts) *lo = glm::min(*lo, p), *hi = glm::max(*hi, p);
         } else if constexpr (std::is_same_v<T, BoxDesc>) {
-          lo = shape.min;
-          hi = shape.max;
-        }
-        for (int i = 0; i < 8; ++i) {
-          corners.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+          *lo = glm::min(shape.min, shape.max);
+          *hi = glm::max(shape.min, shape.max);
         }
       },
       object.shape);
+}
+
+void object_box(const ObjectDesc& object, Point3* lo, Point3* hi) {
+  Point3 a, b;
+  local_bounds(object, &a, &b);
   const Transform t = transform_from_desc(object.transform);
-  Point3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  for (const Point3& c : corners) {
-    const Point3 p = t.point(c);
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
+  *lo = Point3(std::numeric_limits<float>::max());
+  *hi = Point3(-std::numeric_limits<float>::max());
+  for (int i = 0; i < 8; ++i) {
+    const Point3 p = t.point(Point3(i & 1 ? b.x : a.x, i & 2 ? b.y : a.y, i & 4 ? b.z : a.z));
+    *lo = glm::min(*lo, p);
+    *hi = glm::max(*hi, p);
   }
+}
+
+void object_bounds(const ObjectDesc& object, Point3* center, float* radius) {
+  Point3 lo, hi;
+  object_box(object, &lo, &hi);
   *center = 0.5f * (lo + hi);
   *radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
 }

@@ -16,8 +16,12 @@ std::string unique_name(const SceneDesc& scene, ItemKind kind, std::string_view 
 
 enum class NewShape { sphere, quad, box };
 // Each returns the new item's selection; the scene gains a default material when needed.
+// Shapes and lights are placed in front of the camera, sized to the view (ui/placement.h).
 Selection add_shape(SceneDesc& scene, NewShape shape);
-Selection add_mesh(SceneDesc& scene, const std::string& obj_path);
+// The mesh is read (its bounds) and fitted to the view, unless `keep_native_size`: then it
+// keeps the size and place its file gives it. An unreadable file is placed unscaled at
+// the view's centre; compiling the scene reports what is wrong with it.
+Selection add_mesh(SceneDesc& scene, const std::string& obj_path, bool keep_native_size = false);
 Selection add_point_light(SceneDesc& scene);
 Selection add_stroke_emitter(SceneDesc& scene, const std::string& object);
 Selection add_material(SceneDesc& scene);
@@ -29,7 +33,12 @@ bool delete_item(SceneDesc& scene, const Selection& item);
 bool rename_item(SceneDesc& scene, const Selection& item, const std::string& name);
 bool set_visible(SceneDesc& scene, const Selection& item, bool visible);
 
-// The world-space bounds of an object's shape after its transform (meshes use a unit box).
+// The bounds of an object's shape before its transform (meshes: a unit box about the
+// origin, since their extent is in the OBJ file).
+void local_bounds(const ObjectDesc& object, Point3* lo, Point3* hi);
+// The axis-aligned world-space box around the local bounds after the transform.
+void object_box(const ObjectDesc& object, Point3* lo, Point3* hi);
+// The same as a centre and the radius of a sphere around the box.
 void object_bounds(const ObjectDesc& object, Point3* center, float* radius);
 
 }  // namespace inkray

@@ -9,11 +9,21 @@
 namespace inkray {
 namespace {
 
+// A structural edit that would leave the scene unrenderable (deleting a material a
+// mix uses) is refused, and the log says why (EditorState::edit_checked).
 void apply_structural(EditorState& state, const char* label, const auto& change) {
   SceneDesc scene = state.document.scene();
   const Selection selected = change(scene);
-  state.edit(std::move(scene), label);
-  state.selection = selected;
+  if (state.edit_checked(std::move(scene), label)) state.selection = selected;
+}
+
+void delete_selected(EditorState& state, const Selection& item, const std::string& name) {
+  SceneDesc s = state.document.scene();
+  if (!delete_item(s, item)) {
+    state.log.warning("cannot delete " + name + ": objects still use it");
+  } else if (state.edit_checked(std::move(s), "Delete")) {
+    state.selection = {};
+  }
 }
 
 void item_row(EditorState& state, const Selection& item, const std::string& name, bool hidden = false) {
@@ -36,15 +46,7 @@ void item_row(EditorState& state, const Selection& item, const std::string& name
       if (ImGui::MenuItem("Duplicate", "Ctrl+D")) {
         apply_structural(state, "Duplicate", [&](SceneDesc& s) { return duplicate_item(s, item); });
       }
-      if (ImGui::MenuItem("Delete", "Del")) {
-        SceneDesc s = state.document.scene();
-        if (delete_item(s, item)) {
-          state.edit(std::move(s), "Delete");
-          state.selection = {};
-        } else {
-          state.log.warning("cannot delete " + name + ": objects still use it");
-        }
-      }
+      if (ImGui::MenuItem("Delete", "Del")) delete_selected(state, item, name);
       if (item.kind == ItemKind::object) {
         const bool visible = state.document.scene().objects[size_t(item.index)].visible;
         if (ImGui::MenuItem(visible ? "Hide" : "Show")) {
@@ -53,7 +55,8 @@ void item_row(EditorState& state, const Selection& item, const std::string& name
           state.edit(std::move(s), visible ? "Hide" : "Show");
         }
         if (ImGui::MenuItem("Add stroke emitter")) {
-          apply_structural(state, "Add stroke emitter", [&](SceneDesc& s) { return add_stroke_emitter(s, name); });
+          apply_structural(state, "Add stroke emitter",
+                           [&](SceneDesc& s) { return add_stroke_emitter(s, name); });
         }
       }
     }
@@ -77,18 +80,25 @@ void item_list(EditorState& state, const char* title, ItemKind kind, const std::
 void add_menu(EditorState& state) {
   if (ImGui::Button("Add...")) ImGui::OpenPopup("add_menu");
   if (!ImGui::BeginPopup("add_menu")) return;
-  if (ImGui::MenuItem("Sphere")) apply_structural(state, "Add sphere", [](SceneDesc& s) { return add_shape(s, NewShape::sphere); });
-  if (ImGui::MenuItem("Quad")) apply_structural(state, "Add quad", [](SceneDesc& s) { return add_shape(s, NewShape::quad); });
-  if (ImGui::MenuItem("Box")) apply_structural(state, "Add box", [](SceneDesc& s) { return add_shape(s, NewShape::box); });
-  if (ImGui::MenuItem("Mesh from OBJ...")) state.want_add_mesh = true;
+  if (ImGui::MenuItem("Sphere"))
+    apply_structural(state, "Add sphere", [](SceneDesc& s) { return add_shape(s, NewShape::sphere); });
+  if (ImGui::MenuItem("Quad"))
+    apply_structural(state, "Add quad", [](SceneDesc& s) { return add_shape(s, NewShape::quad); });
+  if (ImGui::MenuItem("Box"))
+    apply_structural(state, "Add box", [](SceneDesc& s) { return add_shape(s, NewShape::box); });
+  if (ImGui::MenuItem("Mesh from OBJ...")) state.want_add_mesh = true, state.add_mesh_native_size = false;
+  if (ImGui::MenuItem("Mesh from OBJ, native size...")) state.want_add_mesh = true, state.add_mesh_native_size = true;
   ImGui::Separator();
-  if (ImGui::MenuItem("Point light")) apply_structural(state, "Add light", [](SceneDesc& s) { return add_point_light(s); });
-  if (ImGui::MenuItem("Material")) apply_structural(state, "Add material", [](SceneDesc& s) { return add_material(s); });
+  if (ImGui::MenuItem("Point light"))
+    apply_structural(state, "Add light", [](SceneDesc& s) { return add_point_light(s); });
+  if (ImGui::MenuItem("Material"))
+    apply_structural(state, "Add material", [](SceneDesc& s) { return add_material(s); });
   const SceneDesc& scene = state.document.scene();
   const bool object_selected = state.selection.kind == ItemKind::object && is_valid(scene, state.selection);
   if (ImGui::MenuItem("Stroke emitter on selection", nullptr, false, object_selected)) {
     const std::string object = scene.objects[size_t(state.selection.index)].name;
-    apply_structural(state, "Add stroke emitter", [&](SceneDesc& s) { return add_stroke_emitter(s, object); });
+    apply_structural(state, "Add stroke emitter",
+                     [&](SceneDesc& s) { return add_stroke_emitter(s, object); });
   }
   ImGui::EndPopup();
 }
@@ -105,22 +115,17 @@ void draw_scene_graph_panel(EditorState& state) {
     apply_structural(state, "Duplicate", [&](SceneDesc& s) { return duplicate_item(s, item); });
   }
   ImGui::SameLine();
-  if (ImGui::Button("Delete")) {
-    SceneDesc s = state.document.scene();
-    if (delete_item(s, state.selection)) {
-      state.edit(std::move(s), "Delete");
-      state.selection = {};
-    } else {
-      state.log.warning("cannot delete: objects still use this material");
-    }
-  }
+  if (ImGui::Button("Delete"))
+    delete_selected(state, state.selection, item_name(state.document.scene(), state.selection));
   ImGui::EndDisabled();
   ImGui::Separator();
 
   ImGui::BeginChild("tree");
   const SceneDesc& scene = state.document.scene();
-  for (auto [kind, name] : {std::pair{ItemKind::camera, "Camera"}, {ItemKind::render, "Render settings"},
-                            {ItemKind::environment, "Environment"}, {ItemKind::outlines, "Outlines"}}) {
+  for (auto [kind, name] : {std::pair{ItemKind::camera, "Camera"},
+                            {ItemKind::render, "Render settings"},
+                            {ItemKind::environment, "Environment"},
+                            {ItemKind::outlines, "Outlines"}}) {
     item_row(state, {kind, -1}, name);
   }
   item_list(state, "Objects", ItemKind::object, scene.objects);

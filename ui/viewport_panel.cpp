@@ -1,19 +1,62 @@
 #include "ui/viewport_panel.h"
 
+#include "ui/fonts.h"
+#include "ui/gizmo_drawing.h"
+#include "ui/gl_texture.h"
 #include "ui/picking.h"
 #include "ui/scene_edits.h"
+#include "ui/widget_report.h"
 
 #include <GL/gl.h>
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace inkray {
 namespace {
 
 constexpr const char* kNavMergeKey = "viewport:camera";
+constexpr float kClickSlop = 3.f;  // window pixels a click may stray before it is a drag
+constexpr int kStatsKey = 'I';
+constexpr int kGizmoModeKey = 'W';
+
+// Lays toolbar widgets out left to right and starts a new line where the next one would
+// be clipped: each is measured before it is drawn.
+class ToolbarFlow {
+ public:
+  void next(float width) {
+    if (started_) {
+      const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+      if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
+    }
+    started_ = true;
+  }
+
+ private:
+  bool started_ = false;
+};
+
+float text_width(const char* label) { return ImGui::CalcTextSize(label, nullptr, true).x; }
+float button_width(const char* label) { return text_width(label) + 2.f * ImGui::GetStyle().FramePadding.x; }
+float labelled_width(float item, const char* label) {
+  const float text = text_width(label);
+  return item + (text > 0.f ? ImGui::GetStyle().ItemInnerSpacing.x + text : 0.f);
+}
+float checkbox_width(const char* label) { return labelled_width(ImGui::GetFrameHeight(), label); }
+
+// Whether the viewport may take a plain key: no widget wants text and no Ctrl or Alt
+// (those are the menus' shortcuts).
+bool plain_key(int key) {
+  const ImGuiIO& io = ImGui::GetIO();
+  return !io.WantTextInput && !io.KeyCtrl && !io.KeyAlt && ImGui::IsKeyPressed(key, false);
+}
+
+bool key_pressed(ImGuiKey key, bool repeat = false) {
+  return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), repeat);
+}
 
 std::string display_name(int display) {
   if (display == kDisplayNoise) return "noise estimate";
@@ -22,14 +65,7 @@ std::string display_name(int display) {
 
 }  // namespace
 
-ViewportPanel::ViewportPanel() {
-  glGenTextures(1, &texture_);
-  glBindTexture(GL_TEXTURE_2D, texture_);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
+ViewportPanel::ViewportPanel() : texture_(make_image_texture()) {}
 
 ViewportPanel::~ViewportPanel() { glDeleteTextures(1, &texture_); }
 
@@ -45,8 +81,10 @@ void ViewportPanel::upload(const ViewportSnapshot& s) {
   }
 }
 
-void ViewportPanel::toolbar(EditorState& state, ProgressiveRenderer& renderer) {
-  ImGui::SetNextItemWidth(120.f);
+void ViewportPanel::toolbar(EditorState& state) {
+  ToolbarFlow flow;
+  flow.next(8.f * ImGui::GetFontSize());
+  ImGui::SetNextItemWidth(8.f * ImGui::GetFontSize());
   if (ImGui::BeginCombo("##display", display_name(state.view.display).c_str())) {
     // The final image, the noise estimate, then the AOVs.
     for (int d : {kDisplayFinal, kDisplayNoise}) {
@@ -57,11 +95,13 @@ void ViewportPanel::toolbar(EditorState& state, ProgressiveRenderer& renderer) {
     }
     ImGui::EndCombo();
   }
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(110.f);
+  widget_report::item("viewport.display");
+  flow.next(labelled_width(7.f * ImGui::GetFontSize(), "exposure"));
+  ImGui::SetNextItemWidth(7.f * ImGui::GetFontSize());
   ImGui::SliderFloat("exposure", &state.view.encoding.exposure, -8.f, 8.f, "%.1f EV");
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(100.f);
+  widget_report::item("viewport.exposure");
+  flow.next(7.f * ImGui::GetFontSize());
+  ImGui::SetNextItemWidth(7.f * ImGui::GetFontSize());
   int transform = int(state.view.encoding.transform);
   if (ImGui::BeginCombo("##transform", std::string(kViewTransformNames[size_t(transform)]).c_str())) {
     for (int t = 0; t < int(kViewTransformNames.size()); ++t) {
@@ -71,36 +111,117 @@ void ViewportPanel::toolbar(EditorState& state, ProgressiveRenderer& renderer) {
     }
     ImGui::EndCombo();
   }
-  ImGui::SameLine();
-  if (ImGui::Button(state.paused ? "Resume" : "Pause")) state.paused = !state.paused;
-  ImGui::SameLine();
+  widget_report::item("viewport.view_transform");
+  const char* pause = state.paused ? "Resume" : "Pause";
+  flow.next(button_width(pause));
+  if (ImGui::Button(pause)) state.paused = !state.paused;
+  widget_report::item("viewport.pause");
+  flow.next(checkbox_width("Region"));
   ImGui::Checkbox("Region", &state.region_tool);
+  widget_report::item("viewport.region");
   if (!state.region.empty()) {
-    ImGui::SameLine();
+    flow.next(button_width("Clear region"));
     if (ImGui::Button("Clear region")) state.region = {};
+    widget_report::item("viewport.clear_region");
   }
-  ImGui::SameLine();
+  flow.next(button_width("Frame (F)"));
   if (ImGui::Button("Frame (F)")) state.want_frame_selected = true;
-  ImGui::SameLine();
+  widget_report::item("viewport.frame");
+  flow.next(button_width("Reset camera"));
   if (ImGui::Button("Reset camera")) {
     SceneDesc scene = state.document.scene();
     scene.camera = state.home_camera;
     state.edit(std::move(scene), "Reset camera");
   }
-  (void)renderer;
+  widget_report::item("viewport.reset_camera");
+  static constexpr const char* kModeWidgets[3] = {"viewport.gizmo_move", "viewport.gizmo_rotate",
+                                                  "viewport.gizmo_scale"};
+  for (int m = 0; m < 3; ++m) {
+    const char* label = kGizmoModeNames[m];
+    flow.next(checkbox_width(label));
+    if (ImGui::RadioButton(label, int(gizmo_mode_) == m)) gizmo_mode_ = GizmoMode(m);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Gizmo mode (W cycles); G, R, S move, rotate, scale with the mouse");
+    widget_report::item(kModeWidgets[m]);
+  }
+  flow.next(checkbox_width("Stats (I)"));
+  ImGui::Checkbox("Stats (I)", &show_stats_);
+  widget_report::item("viewport.stats");
 }
 
 void ViewportPanel::problems_overlay(const std::vector<std::string>& problems, float x, float y, float w) {
   std::string text = "This scene cannot render until this is mended:";
   constexpr size_t kShown = 6;
   for (size_t i = 0; i < problems.size() && i < kShown; ++i) text += "\n" + problems[i];
-  if (problems.size() > kShown) text += "\n... and " + std::to_string(problems.size() - kShown) + " more (see the log)";
+  if (problems.size() > kShown)
+    text += "\n... and " + std::to_string(problems.size() - kShown) + " more (see the log)";
   const float wrap = std::max(w - 28.f, 200.f);
   const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->AddRectFilled(ImVec2(x + 6, y + 6), ImVec2(x + 18 + size.x, y + 16 + size.y), IM_COL32(90, 20, 20, 220), 4.f);
-  draw->AddText(nullptr, 0.f, ImVec2(x + 12, y + 11), IM_COL32(255, 230, 220, 255), text.c_str(), nullptr, wrap);
+  draw->AddRectFilled(ImVec2(x + 6, y + 6), ImVec2(x + 18 + size.x, y + 16 + size.y),
+                      IM_COL32(90, 20, 20, 220), 4.f);
+  draw->AddText(nullptr, 0.f, ImVec2(x + 12, y + 11), IM_COL32(255, 230, 220, 255), text.c_str(), nullptr,
+                wrap);
 }
+
+namespace {
+
+// log10 of the relative error against seconds, with labelled axes: straight lines for
+// 1/sqrt(n) convergence at a steady rate. `at` is the top left of the plot's box, which
+// is kErrorPlotHeight + two text lines tall, kept small to leave the image visible.
+constexpr float kErrorPlotHeight = 44.f;
+
+void error_plot(ImDrawList* draw, const std::vector<ErrorSample>& curve, ImVec2 at, float width) {
+  constexpr float kLeft = 30.f;  // room for the error's tick labels
+  const ImU32 axis_colour = IM_COL32(160, 160, 160, 255), label_colour = IM_COL32(210, 210, 210, 255);
+  const float line_h = ImGui::GetTextLineHeight();
+  const ImVec2 p0(at.x + kLeft, at.y + 0.5f * line_h),
+      p1(at.x + width, at.y + 0.5f * line_h + kErrorPlotHeight);
+  double t_max = 0.0, lo = 1e9, hi = -1e9;
+  for (const ErrorSample& e : curve) {
+    t_max = std::max(t_max, e.seconds);
+    if (!(e.relative_error > 0.0)) continue;  // no estimate yet
+    const double v = std::log10(e.relative_error);
+    lo = std::min(lo, v), hi = std::max(hi, v);
+  }
+  if (lo > hi) lo = -2.0, hi = -1.0;
+  lo = std::floor(lo), hi = std::max(std::ceil(hi), lo + 1.0);
+  t_max = std::max(t_max, 1e-3);
+  const auto px = [&](double t) { return p0.x + float(t / t_max) * (p1.x - p0.x); };
+  const auto py = [&](double v) { return p1.y - float((v - lo) / (hi - lo)) * (p1.y - p0.y); };
+  draw->AddLine(ImVec2(p0.x, p0.y), ImVec2(p0.x, p1.y), axis_colour);
+  draw->AddLine(ImVec2(p0.x, p1.y), ImVec2(p1.x, p1.y), axis_colour);
+  // The error falls from the top left, so its title sits top right, clear of the curve.
+  const char* y_title = "log10 relative error";
+  draw->AddText(ImVec2(p1.x - ImGui::CalcTextSize(y_title).x, p0.y), label_colour, y_title);
+  char text[32];
+  const int decade_step = hi - lo > 3.0 ? 2 : 1;
+  for (int d = int(lo); d <= int(hi); d += decade_step) {
+    const float y = py(d);
+    draw->AddLine(ImVec2(p0.x - 3.f, y), ImVec2(p0.x, y), axis_colour);
+    std::snprintf(text, sizeof text, "%d", d);
+    draw->AddText(ImVec2(p0.x - 5.f - ImGui::CalcTextSize(text).x, y - 0.5f * line_h), label_colour, text);
+  }
+  // Seconds at both ends, the axis title between them.
+  for (const double t : {0.0, t_max}) {
+    const float x = px(t);
+    draw->AddLine(ImVec2(x, p1.y), ImVec2(x, p1.y + 3.f), axis_colour);
+    std::snprintf(text, sizeof text, t_max >= 10.0 ? "%.0f" : "%.1f", t);
+    const float w = ImGui::CalcTextSize(text).x;
+    draw->AddText(ImVec2(std::clamp(x - 0.5f * w, p0.x, p1.x - w), p1.y + 3.f), label_colour, text);
+  }
+  const char* x_title = "time (s)";
+  draw->AddText(ImVec2(0.5f * (p0.x + p1.x) - 0.5f * ImGui::CalcTextSize(x_title).x, p1.y + 3.f),
+                label_colour, x_title);
+  std::vector<ImVec2> points;
+  points.reserve(curve.size());
+  for (const ErrorSample& e : curve) {
+    if (e.relative_error > 0.0) points.emplace_back(px(e.seconds), py(std::log10(e.relative_error)));
+  }
+  draw->AddPolyline(points.data(), int(points.size()), IM_COL32(120, 200, 255, 255), 0, 1.5f);
+}
+
+}  // namespace
 
 void ViewportPanel::overlay(const ViewportSnapshot& s, float x, float y) {
   const RenderStats& st = s.stats;
@@ -114,22 +235,130 @@ void ViewportPanel::overlay(const ViewportSnapshot& s, float x, float y) {
   }
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 size = ImGui::CalcTextSize(text);
-  draw->AddRectFilled(ImVec2(x + 6, y + 6), ImVec2(x + 14 + std::max(size.x, 180.f), y + 14 + size.y + 48),
+  const float width = std::max(size.x, 180.f);  // narrow: the image matters more
+  const bool plot = s.error_curve.size() >= 2;
+  const float plot_h = plot ? kErrorPlotHeight + 6.f + 2.f * ImGui::GetTextLineHeight() : 0.f;
+  draw->AddRectFilled(ImVec2(x + 6, y + 6), ImVec2(x + 14 + width, y + 16 + size.y + plot_h),
                       IM_COL32(0, 0, 0, 150), 4.f);
   draw->AddText(ImVec2(x + 10, y + 10), IM_COL32(235, 235, 235, 255), text);
-  if (s.error_curve.size() >= 2) {
-    // log10 of the error against pass: straight lines for 1/sqrt(n) convergence.
-    std::vector<float> values;
-    values.reserve(s.error_curve.size());
-    for (const ErrorSample& e : s.error_curve) values.push_back(float(std::log10(std::max(e.relative_error, 1e-6))));
-    ImGui::SetCursorScreenPos(ImVec2(x + 10, y + 12 + size.y));
-    ImGui::PlotLines("##error", values.data(), int(values.size()), 0, "log error / time", FLT_MAX, FLT_MAX,
-                     ImVec2(std::max(size.x, 180.f) - 4.f, 42.f));
-  }
+  if (plot) error_plot(draw, s.error_curve, ImVec2(x + 10, y + 14 + size.y), width - 6.f);
 }
 
-void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& renderer, float x, float y, float w,
-                                 float h) {
+void ViewportPanel::edit_transform(EditorState& state, int object, const TransformDesc& t, const char* label,
+                                   const std::string& merge_key) {
+  if (state.document.scene().objects[size_t(object)].transform == t) return;
+  // No button is held through a G/R/S tool, so nothing keeps the merge open: its step
+  // is replaced instead, while it is still the newest.
+  if (merge_key.empty() && own_revision_ == state.document.revision()) state.document.discard_newest();
+  SceneDesc edited = state.document.scene();
+  edited.objects[size_t(object)].transform = t;
+  state.edit(std::move(edited), label, merge_key);
+  own_revision_ = state.document.revision();
+}
+
+void ViewportPanel::restore_transform(EditorState& state, int object, const TransformDesc& original) {
+  if (own_revision_ != 0 && own_revision_ == state.document.revision()) {
+    state.document.discard_newest();  // the drag's own step, still the newest: gone as if never made
+  } else if (object < int(state.document.scene().objects.size()) &&
+             !(state.document.scene().objects[size_t(object)].transform == original)) {
+    SceneDesc edited = state.document.scene();
+    edited.objects[size_t(object)].transform = original;
+    state.edit(std::move(edited), "Cancel transform");
+  }
+  own_revision_ = 0;
+}
+
+bool ViewportPanel::tool_input(EditorState& state, const ViewMapping& view, int object) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!tool_.active()) {
+    if (object < 0 || !ImGui::IsItemHovered()) return false;
+    static constexpr int kKeys[3] = {'G', 'R', 'S'};
+    for (int m = 0; m < 3; ++m) {
+      if (!plain_key(kKeys[m])) continue;
+      tool_.begin(GizmoMode(m), state.document.scene().objects[size_t(object)], view,
+                  Vec2(io.MousePos.x, io.MousePos.y));
+      moving_object_ = object;
+      own_revision_ = 0;
+      return true;
+    }
+    return false;
+  }
+  if (object != moving_object_) {  // undone, deleted or deselected under the tool
+    tool_.cancel();
+    own_revision_ = 0;
+    return false;
+  }
+  tool_.mouse_move(Vec2(io.MousePos.x, io.MousePos.y), io.KeyCtrl);
+  for (int a = 0; a < 3; ++a) {
+    if (plain_key('X' + a)) tool_.constrain(a);
+  }
+  for (ImWchar c : io.InputQueueCharacters) {
+    if ((c >= '0' && c <= '9') || c == '.' || c == '-') tool_.type(char(c));
+  }
+  if (key_pressed(ImGuiKey_Backspace, true)) tool_.backspace();
+  const char* label = kGizmoModeNames[int(tool_.mode())];
+  if (key_pressed(ImGuiKey_Escape) || ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
+    restore_transform(state, object, tool_.cancel());
+    ignore_until_release_ = ImGui::IsItemActivated();  // the click that cancelled picks nothing
+  } else if (key_pressed(ImGuiKey_Enter) || key_pressed(ImGuiKey_KeyPadEnter) ||
+             ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    edit_transform(state, object, tool_.confirm(), label, {});
+    ignore_until_release_ = ImGui::IsItemActivated();
+    own_revision_ = 0;
+  } else {
+    edit_transform(state, object, tool_.transform(), label, {});
+    const GizmoFrame frame = gizmo_frame(state.document.scene().objects[size_t(object)], tool_.mode(), view);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    if (tool_.axis() >= 0) draw_axis_line(draw, frame, tool_.axis(), view);
+    draw_header(draw, ImVec2(view.origin.x + 6.f, view.origin.y + 6.f), tool_.header());
+  }
+  return true;
+}
+
+bool ViewportPanel::gizmo_input(EditorState& state, const ViewMapping& view, int object, bool activated,
+                                bool active) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (object < 0) {
+    gizmo_drag_.reset();
+    return false;
+  }
+  const ObjectDesc& o = state.document.scene().objects[size_t(object)];
+  const GizmoFrame frame = gizmo_frame(o, gizmo_mode_, view);
+  if (activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !state.region_tool) {
+    const GizmoHandle handle = pick_handle(frame, gizmo_mode_, view, press_);
+    if (handle.kind != HandleKind::none) {
+      gizmo_drag_.emplace(o, gizmo_mode_, handle, view, press_);
+      moving_object_ = object;
+      own_revision_ = 0;
+      ++drags_;
+      ignore_until_release_ = true;  // its release is no click
+    }
+  }
+  if (gizmo_drag_ && (!active || moving_object_ != object)) gizmo_drag_.reset();
+  if (gizmo_drag_ && key_pressed(ImGuiKey_Escape)) {
+    restore_transform(state, object, gizmo_drag_->original());
+    gizmo_drag_.reset();
+    ignore_until_release_ = true;
+    return true;
+  }
+  GizmoHandle hot;
+  if (gizmo_drag_) {
+    const TransformDesc t = gizmo_drag_->drag_to(Vec2(io.MousePos.x, io.MousePos.y), io.KeyCtrl);
+    edit_transform(state, object, t, kGizmoModeNames[int(gizmo_mode_)],
+                   "viewport:gizmo:" + std::to_string(drags_));
+    hot = gizmo_drag_->handle();
+  } else if (!active && ImGui::IsItemHovered()) {
+    hot = pick_handle(frame, gizmo_mode_, view, Vec2(io.MousePos.x, io.MousePos.y));
+  }
+  // Drawn from the document as edited this frame, so the gizmo stays under the mouse.
+  draw_gizmo(ImGui::GetWindowDrawList(),
+             gizmo_frame(state.document.scene().objects[size_t(object)], gizmo_mode_, view), gizmo_mode_,
+             view, hot);
+  return gizmo_drag_.has_value();
+}
+
+void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& renderer, float x, float y,
+                                 float w, float h) {
   ImGui::SetCursorScreenPos(ImVec2(x, y));
   ImGui::InvisibleButton("viewport_input", ImVec2(w, h),
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
@@ -137,26 +366,42 @@ void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& 
   const ImGuiIO& io = ImGui::GetIO();
   const bool hovered = ImGui::IsItemHovered();
   const bool active = ImGui::IsItemActive();
+  const bool activated = ImGui::IsItemActivated();
   const SceneDesc& scene = state.document.scene();
-  const float image_height = float(scene.render.height);
+  const float image_width = float(std::max(scene.render.width, 1)),
+              image_height = float(std::max(scene.render.height, 1));
   const float to_image = image_height / std::max(h, 1.f);  // window pixels -> image pixels
-  const ImVec2 mouse = io.MousePos;
-  const auto fraction = [&](ImVec2 p) { return ImVec2(std::clamp((p.x - x) / w, 0.f, 1.f), std::clamp((p.y - y) / h, 0.f, 1.f)); };
+  const ViewMapping view{Camera(scene.camera, int(image_width), int(image_height)), Vec2(x, y),
+                         1.f / to_image, ui_scale_of_font()};
+  const Vec2 mouse(io.MousePos.x, io.MousePos.y);
+  const auto fraction = [&](Vec2 p) {
+    return Vec2(std::clamp((p.x - x) / w, 0.f, 1.f), std::clamp((p.y - y) / h, 0.f, 1.f));
+  };
+  const int object = state.selection.kind == ItemKind::object && is_valid(scene, state.selection)
+                         ? state.selection.index
+                         : -1;
 
-  if (ImGui::IsItemActivated()) {
-    drag_start_x_ = mouse.x, drag_start_y_ = mouse.y;
-    drag_distance_ = 0.f;
+  if (activated) {
+    // Where the button went down: the cursor may have jumped there in this very frame.
+    for (int b = 0; b < 3; ++b) {
+      if (ImGui::IsMouseClicked(b)) press_ = Vec2(io.MouseClickedPos[b].x, io.MouseClickedPos[b].y);
+    }
+    drag_distance_ = glm::length(mouse - press_);
     dragging_region_ = state.region_tool && ImGui::IsMouseDown(ImGuiMouseButton_Left);
   }
-  if (active) drag_distance_ += std::abs(io.MouseDelta.x) + std::abs(io.MouseDelta.y);
+  if (active) drag_distance_ = std::max(drag_distance_, glm::length(mouse - press_));
+
+  const bool tool_running = tool_input(state, view, object);
+  const bool gizmo_dragging = !tool_running && gizmo_input(state, view, object, activated, active);
+  const bool navigating = !tool_running && !gizmo_dragging && !ignore_until_release_;
   const bool moved = io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f;
 
-  if (active && dragging_region_) {
-    const ImVec2 a = ImVec2(drag_start_x_, drag_start_y_);
+  if (navigating && active && dragging_region_) {
+    const Vec2 a = press_;
     ImGui::GetWindowDrawList()->AddRect(ImVec2(std::min(a.x, mouse.x), std::min(a.y, mouse.y)),
                                         ImVec2(std::max(a.x, mouse.x), std::max(a.y, mouse.y)),
                                         IM_COL32(255, 200, 60, 255), 0.f, 0, 1.5f);
-  } else if (active && moved && drag_distance_ > 2.f) {
+  } else if (navigating && active && !activated && moved && drag_distance_ > kClickSlop) {
     CameraDesc camera = scene.camera;
     const bool pan_drag = ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
                           (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift);
@@ -171,27 +416,29 @@ void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& 
     edited.camera = camera;
     state.edit(std::move(edited), "Move camera", kNavMergeKey);
   }
-  if (hovered && io.MouseWheel != 0.f) {
-    SceneDesc edited = scene;
-    edited.camera = controller_.wheel(scene.camera, io.MouseWheel);
+  if (!tool_running && hovered && io.MouseWheel != 0.f) {
+    SceneDesc edited = state.document.scene();
+    edited.camera = controller_.wheel(edited.camera, io.MouseWheel);
     state.edit(std::move(edited), "Dolly camera");
   }
   if (ImGui::IsItemDeactivated()) {
-    if (dragging_region_) {
-      const ImVec2 a = fraction(ImVec2(drag_start_x_, drag_start_y_)), b = fraction(mouse);
+    if (!navigating) {
+      // The press belonged to the tool or a cancelled drag.
+    } else if (dragging_region_) {
+      const Vec2 a = fraction(press_), b = fraction(mouse);
       RegionRect r{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
       if ((r.x1 - r.x0) * w > 4.f && (r.y1 - r.y0) * h > 4.f) state.region = r;
-      dragging_region_ = false;
-    } else if (drag_distance_ <= 2.f && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+    } else if (drag_distance_ <= kClickSlop && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
       // A click, not a drag: pick, or with Ctrl focus on what is under the cursor.
       if (auto compiled = renderer.scene()) {
-        const ImVec2 f = fraction(mouse);
+        const Vec2 f = fraction(press_);
         const float iw = float(compiled->settings.width), ih = float(compiled->settings.height);
-        const PickResult hit = pick(*compiled, Camera(scene.camera, int(iw), int(ih)), Vec2(f.x * iw, f.y * ih));
+        const PickResult hit =
+            pick(*compiled, Camera(scene.camera, int(iw), int(ih)), Vec2(f.x * iw, f.y * ih));
         if (io.KeyCtrl) {
           if (hit.object >= 0) {
-            SceneDesc edited = scene;
-            edited.camera = focus_at(scene.camera, hit.depth);
+            SceneDesc edited = state.document.scene();
+            edited.camera = focus_at(edited.camera, hit.depth);
             state.edit(std::move(edited), "Focus");
             state.log.info("focus distance " + std::to_string(hit.depth));
           }
@@ -200,18 +447,21 @@ void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& 
         }
       }
     }
+    dragging_region_ = false;
+    ignore_until_release_ = false;
   }
+  if (tool_running) return;
   // ImGui 1.86 indexes keys by the GLFW key code, which for letters is the ASCII capital.
   // Keys reach the viewport only when no widget takes text or keyboard input.
-  if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && !io.WantTextInput &&
-      ImGui::IsKeyPressed('F', false) && !io.KeyCtrl) {
+  if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && plain_key('F'))
     state.want_frame_selected = true;
-  }
+  if (hovered && plain_key(kGizmoModeKey)) gizmo_mode_ = GizmoMode((int(gizmo_mode_) + 1) % 3);
+  if (hovered && plain_key(kStatsKey)) show_stats_ = !show_stats_;
 }
 
 ViewportFrame ViewportPanel::draw(EditorState& state, ProgressiveRenderer& renderer) {
   ViewportFrame frame;
-  toolbar(state, renderer);
+  toolbar(state);
   const uint64_t generation = renderer.generation();
   if (generation != uploaded_generation_) {
     if (auto s = renderer.latest()) {
@@ -232,20 +482,22 @@ ViewportFrame ViewportPanel::draw(EditorState& state, ProgressiveRenderer& rende
   float w = avail.x, h = avail.x / aspect;
   if (h > avail.y) h = avail.y, w = avail.y * aspect;
   w = std::max(w, 1.f), h = std::max(h, 1.f);
-  const float x = std::floor(origin.x + (avail.x - w) * 0.5f), y = std::floor(origin.y + (avail.y - h) * 0.5f);
+  const float x = std::floor(origin.x + (avail.x - w) * 0.5f),
+              y = std::floor(origin.y + (avail.y - h) * 0.5f);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(20, 20, 22, 255));
-  if (snapshot_) draw->AddImage(reinterpret_cast<ImTextureID>(uintptr_t(texture_)), ImVec2(x, y), ImVec2(x + w, y + h));
+  if (snapshot_)
+    draw->AddImage(reinterpret_cast<ImTextureID>(uintptr_t(texture_)), ImVec2(x, y), ImVec2(x + w, y + h));
   if (!state.region.empty()) {
     draw->AddRect(ImVec2(x + state.region.x0 * w, y + state.region.y0 * h),
-                  ImVec2(x + state.region.x1 * w, y + state.region.y1 * h), IM_COL32(255, 200, 60, 200), 0.f, 0,
-                  1.f);
+                  ImVec2(x + state.region.x1 * w, y + state.region.y1 * h), IM_COL32(255, 200, 60, 200), 0.f,
+                  0, 1.f);
   }
   handle_input(state, renderer, x, y, w, h);
   if (!state.render_problems.empty()) {
     problems_overlay(state.render_problems, x, y, w);
-  } else if (snapshot_) {
-    overlay(*snapshot_, x, y);
+  } else if (snapshot_ && show_stats_ && !tool_.active()) {
+    overlay(*snapshot_, x, y);  // the tool's header takes its corner
   }
   frame.image_x = x, frame.image_y = y, frame.image_w = w, frame.image_h = h;
   return frame;

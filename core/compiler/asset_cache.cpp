@@ -20,6 +20,31 @@ std::optional<std::string> file_stamp(const std::filesystem::path& file) {
          std::to_string(time.time_since_epoch().count()) + "|" + std::to_string(size);
 }
 
+const std::shared_ptr<const RgbImage>& stand_in_image() {
+  static const std::shared_ptr<const RgbImage> image = [] {
+    // 8 texels a square: bilinear filtering softens only the squares' edges.
+    constexpr int kSquares = 8, kTexels = 8;
+    auto checker = std::make_shared<RgbImage>();
+    checker->width = checker->height = kSquares * kTexels;
+    checker->pixels.resize(size_t(checker->width) * size_t(checker->height));
+    for (int y = 0; y < checker->height; ++y)
+      for (int x = 0; x < checker->width; ++x)
+        checker->at(x, y) = ((x / kTexels + y / kTexels) & 1) ? kStandInOdd : kStandInEven;
+    return std::shared_ptr<const RgbImage>(std::move(checker));
+  }();
+  return image;
+}
+
+const std::shared_ptr<const AlphaMask>& stand_in_brush() {
+  static const std::shared_ptr<const AlphaMask> mask = [] {
+    auto opaque = std::make_shared<AlphaMask>();
+    opaque->width = opaque->height = 1;
+    opaque->texels = {255};
+    return std::shared_ptr<const AlphaMask>(std::move(opaque));
+  }();
+  return mask;
+}
+
 void AssetCache::note_read(const std::filesystem::path& file) {
   {
     const std::lock_guard lock(mutex_);
@@ -28,14 +53,37 @@ void AssetCache::note_read(const std::filesystem::path& file) {
   if (on_file_read) on_file_read(file);
 }
 
+bool AssetCache::failed_before(const std::optional<std::string>& stamp, std::string* error) {
+  if (!stamp) return false;
+  const auto found = find<std::string>("failed|" + *stamp);
+  if (!found) return false;
+  *error = *found;
+  return true;
+}
+
+void AssetCache::keep_failure(const std::optional<std::string>& stamp, const std::string& error) {
+  if (stamp) keep("failed|" + *stamp, std::make_shared<const std::string>(error));
+}
+
+std::optional<std::string> AssetCache::failure(const std::filesystem::path& file) {
+  std::string error;
+  if (!failed_before(file_stamp(file), &error)) return std::nullopt;
+  return error;
+}
+
 std::shared_ptr<const RgbImage> AssetCache::image(const std::filesystem::path& file, bool srgb, std::string* error) {
   const auto stamp = file_stamp(file);
   const std::string key = "image|" + (stamp ? *stamp : file.string()) + (srgb ? "|srgb" : "|linear");
   if (stamp)
     if (auto found = find<RgbImage>(key)) return found;
+  const auto unreadable = [&]() -> std::shared_ptr<const RgbImage> { return stand_ins_ ? stand_in_image() : nullptr; };
+  if (failed_before(stamp, error)) return unreadable();
   note_read(file);
   RgbImage image;
-  if (!read_image(file, srgb, &image, error)) return nullptr;
+  if (!read_image(file, srgb, &image, error)) {
+    keep_failure(stamp, *error);
+    return unreadable();
+  }
   auto value = std::make_shared<const RgbImage>(std::move(image));
   return stamp ? keep(key, std::move(value)) : value;
 }
@@ -46,9 +94,15 @@ std::shared_ptr<const std::vector<float>> AssetCache::image_alpha(const std::fil
   const std::string key = "image alpha|" + (stamp ? *stamp : file.string());
   if (stamp)
     if (auto found = find<std::vector<float>>(key)) return found;
+  // A stand-in is opaque: no alpha channel.
+  const auto unreadable = [&] { return stand_ins_ ? std::make_shared<const std::vector<float>>() : nullptr; };
+  if (failed_before(stamp, error)) return unreadable();
   note_read(file);
   std::vector<float> alpha;
-  if (!read_image_alpha(file, &alpha, error)) return nullptr;
+  if (!read_image_alpha(file, &alpha, error)) {
+    keep_failure(stamp, *error);
+    return unreadable();
+  }
   auto value = std::make_shared<const std::vector<float>>(std::move(alpha));
   return stamp ? keep(key, std::move(value)) : value;
 }
@@ -58,9 +112,11 @@ std::optional<ImageSize> AssetCache::image_size(const std::filesystem::path& fil
   const std::string key = "image size|" + (stamp ? *stamp : file.string());
   if (stamp)
     if (auto found = find<ImageSize>(key)) return *found;
+  if (failed_before(stamp, error)) return std::nullopt;
   note_read(file);
   const auto size = read_image_size(file, error);
   if (size && stamp) keep(key, std::make_shared<const ImageSize>(*size));
+  if (!size) keep_failure(stamp, *error);
   return size;
 }
 
@@ -69,9 +125,13 @@ std::shared_ptr<const TriangleMeshData> AssetCache::mesh(const std::filesystem::
   const std::string key = "mesh|" + (stamp ? *stamp : file.string());
   if (stamp)
     if (auto found = find<TriangleMeshData>(key)) return found;
+  if (failed_before(stamp, error)) return nullptr;
   note_read(file);
   auto data = load_obj(file, error);
-  if (!data) return nullptr;
+  if (!data) {
+    keep_failure(stamp, *error);
+    return nullptr;
+  }
   auto value = std::make_shared<const TriangleMeshData>(std::move(*data));
   return stamp ? keep(key, std::move(value)) : value;
 }
@@ -90,9 +150,16 @@ std::shared_ptr<const AlphaMask> AssetCache::brush(const StrokeEmitterDesc& e, c
   }
   if (!from_file || stamp)
     if (auto found = find<AlphaMask>(key)) return found;
+  const auto unreadable = [&]() -> std::shared_ptr<const AlphaMask> {
+    return stand_ins_ && from_file ? stand_in_brush() : nullptr;
+  };
+  if (failed_before(stamp, error)) return unreadable();
   if (from_file) note_read(base_dir / e.brush_image);
   auto mask = make_brush_mask(e, base_dir, error);
-  if (!mask) return nullptr;
+  if (!mask) {
+    keep_failure(stamp, *error);
+    return unreadable();
+  }
   std::shared_ptr<const AlphaMask> value = std::move(mask);
   return !from_file || stamp ? keep(key, std::move(value)) : value;
 }

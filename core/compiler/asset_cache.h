@@ -27,10 +27,28 @@ namespace inkray {
 // time and size (one stat). An edited or replaced file gets a new stamp.
 std::optional<std::string> file_stamp(const std::filesystem::path& file);
 
+// What the editor draws in place of a file that is missing or cannot be read, in the
+// look of a graph that does not compile: a magenta and near-black checker. One
+// immutable instance each, so a caller can tell a stand-in from a file it read.
+inline const Color kStandInEven{1.f, 0.f, 1.f};
+inline const Color kStandInOdd{0.05f, 0.f, 0.05f};
+const std::shared_ptr<const RgbImage>& stand_in_image();   // 8 x 8 squares over the uv square
+const std::shared_ptr<const AlphaMask>& stand_in_brush();  // opaque: the strokes show where they grow
+
 class AssetCache {
  public:
   // Called with every file the cache is about to read (tests count them).
   std::function<void(const std::filesystem::path&)> on_file_read;
+
+  // While set, image(), image_alpha() and brush() answer a file they cannot read with
+  // a stand-in (and still set *error); the editor's compiles set it. Stand-ins are
+  // never kept under a file's key, so the file is tried again by the next compile.
+  void serve_stand_ins(bool on) { stand_ins_ = on; }
+  // The reader's error for a file that is there but could not be read. A failure is
+  // kept under the file's stamp like a result (a broken file is read once, not on
+  // every compile, and again once it changes); a missing file has no stamp, so
+  // nothing is kept for it.
+  std::optional<std::string> failure(const std::filesystem::path& file);
 
   // A decoded image (linear RGB), by stamp and colour encoding.
   std::shared_ptr<const RgbImage> image(const std::filesystem::path& file, bool srgb, std::string* error);
@@ -88,6 +106,9 @@ class AssetCache {
     std::vector<std::string> from;    // entries it was built from, kept while it is
   };
   void note_read(const std::filesystem::path& file);
+  // The failure kept for this stamp, if any (sets *error).
+  bool failed_before(const std::optional<std::string>& stamp, std::string* error);
+  void keep_failure(const std::optional<std::string>& stamp, const std::string& error);
   void mark_used(const std::string& key, Entry& entry);  // under mutex_
 
   mutable std::mutex mutex_;
@@ -95,6 +116,7 @@ class AssetCache {
   uint64_t compile_ = 0;
   uint64_t files_read_ = 0;
   std::vector<std::string>* recording_ = nullptr;
+  bool stand_ins_ = false;
 };
 
 }  // namespace inkray

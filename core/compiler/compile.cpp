@@ -10,6 +10,7 @@
 #include "core/document/memory_budget.h"
 #include "core/document/scene_checks.h"
 
+#include <algorithm>
 #include <map>
 
 namespace inkray {
@@ -57,6 +58,36 @@ Stage stage_of(AssetKind kind) {
   return Stage::material;
 }
 
+// With stand-ins (`references` listed), check_scene's "file not found" for a file in
+// use is no error: the compile draws a placeholder and says so in its warnings.
+void forgive_missing_files(const std::vector<AssetReference>& references, std::vector<std::string>& errors) {
+  for (const AssetReference& r : references) {
+    if (r.exists) continue;
+    const std::string prefix = r.site.at + ": ";
+    std::erase_if(errors, [&](const std::string& e) { return e.starts_with(prefix); });
+  }
+}
+
+// One line per file the compile drew as a placeholder: missing ones from the disk,
+// unreadable ones from the failures the cache remembers.
+std::vector<std::string> asset_warnings(const std::vector<AssetReference>& references, AssetCache& assets) {
+  std::vector<std::string> warnings;
+  for (const MissingAsset& m : missing_assets(references)) warnings.push_back(describe(m) + ": drawn as a placeholder");
+  std::vector<std::filesystem::path> reported;
+  for (const AssetReference& r : references) {
+    if (!r.exists || std::find(reported.begin(), reported.end(), r.resolved) != reported.end()) continue;
+    const auto error = assets.failure(r.resolved);
+    if (!error) continue;
+    reported.push_back(r.resolved);
+    std::vector<std::string> users;
+    for (const AssetReference& other : references)
+      if (other.resolved == r.resolved && std::find(users.begin(), users.end(), other.site.user) == users.end())
+        users.push_back(other.site.user);
+    warnings.push_back(*error + ", used by " + users_text(users) + ": drawn as a placeholder");
+  }
+  return warnings;
+}
+
 }  // namespace
 
 StageSet SceneCompiler::changed_files(const SceneDesc& desc, std::map<std::string, std::string>& stamps) const {
@@ -73,11 +104,25 @@ StageSet SceneCompiler::changed_files(const SceneDesc& desc, std::map<std::strin
 }
 
 CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions& options) {
+  assets_.serve_stand_ins(options.stand_in_for_missing_assets);
+  if (!options.stand_in_for_missing_assets) return compile_world(desc, options, {});
+  const std::vector<AssetReference> references = list_asset_references(desc);
+  CompileResult result = compile_world(desc, options, references);
+  if (result.cancelled) return result;
+  std::vector<std::string> files = asset_warnings(references, assets_);
+  if (files != asset_warnings_) result.warnings.insert(result.warnings.end(), files.begin(), files.end());
+  asset_warnings_ = std::move(files);
+  return result;
+}
+
+CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileOptions& options,
+                                           const std::vector<AssetReference>& references) {
   CompileResult result;
   result.changes = last_desc_ ? changed_stages(*last_desc_, desc) : every_stage();
   // A file edited on disk is a change the document cannot show.
   std::map<std::string, std::string> stamps;
-  result.changes.add(changed_files(desc, stamps));
+  const StageSet file_changes = changed_files(desc, stamps);
+  result.changes.add(file_changes);
   const auto cancelled = [&] {
     if (!options.cancel.requested()) return false;
     result.cancelled = true;
@@ -91,6 +136,7 @@ CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions
   ErrorLog log("");
   check_scene(desc, desc.base_dir, log);
   result.errors = log.take();
+  forgive_missing_files(references, result.errors);
   if (result.errors.empty())
     check_memory_budget(desc, options.memory_limit, result.errors,
                         [&](const std::filesystem::path& file, std::string* error) {
@@ -125,8 +171,10 @@ CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions
     // Only the materials whose description changed are compiled again.
     std::vector<Material> last_table;
     if (last_) last_table.assign(last_->materials.begin(), last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
+    // An image changed on disk (or appeared) is seen only by compiling its materials again.
     LastMaterials previous;
-    if (last_desc_) previous = {&last_desc_->materials, &last_table, &material_keys_};
+    if (last_desc_ && !file_changes.has(Stage::material))
+      previous = {&last_desc_->materials, &last_table, &material_keys_};
     counters_.materials += compile_materials(desc, *scene, result.errors, assets_, material_keys, previous,
                                              options.stand_in_for_broken_graphs ? &result.warnings : nullptr);
     ++counters_.material_tables;
@@ -140,7 +188,7 @@ CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions
   std::map<std::string, uint32_t> material_index;
   for (size_t i = 0; i < scene->material_names.size(); ++i) material_index[scene->material_names[i]] = uint32_t(i);
 
-  ObjectBuild objects{assets_, counters_, desc.base_dir};
+  ObjectBuild objects{assets_, counters_, desc.base_dir, options.stand_in_for_missing_assets};
   std::vector<std::string> object_keys;
   for (size_t i = 0; i < desc.objects.size(); ++i) {
     if ((i & 255) == 0 && cancelled()) return result;

@@ -8,6 +8,7 @@
 #include "core/base/cancel.h"
 #include "core/compiler/asset_cache.h"
 #include "core/compiler/compile_counters.h"
+#include "core/document/asset_relink.h"
 #include "core/document/stage_diff.h"
 #include "core/world/render_scene.h"
 
@@ -26,12 +27,21 @@ struct CompileOptions {
   // Draw a material graph that does not compile in a loud stand-in colour and report
   // it in `warnings`, rather than failing the compile (the editor: the scene stays usable).
   bool stand_in_for_broken_graphs = false;
+  // Draw what a missing or unreadable file would have given as a placeholder and
+  // report the file in `warnings`, rather than failing the compile (the editor: a
+  // scene whose files moved opens and can be relinked). A texture or brush image
+  // becomes a magenta checker (stand_in_image(), asset_cache.h), a mesh a unit box
+  // under the object's transform.
+  bool stand_in_for_missing_assets = false;
 };
 
 struct CompileResult {
   std::shared_ptr<const RenderScene> scene;  // null when there were errors or it was cancelled
   std::vector<std::string> errors;
-  std::vector<std::string> warnings;  // broken graphs drawn as stand-ins; the scene renders
+  // Broken graphs and missing or unreadable files drawn as stand-ins; the scene
+  // renders. A SceneCompiler repeats the files' warnings only when they change, so
+  // an editor that logs them is not told again on every edit.
+  std::vector<std::string> warnings;
   bool cancelled = false;  // stopped by options.cancel; errors then says so
   // What separates this document from the last one compiled; every stage for a first compile.
   StageSet changes;
@@ -53,6 +63,9 @@ class SceneCompiler {
   // Stages of the asset files whose stamps differ from the last compile's; fills
   // `stamps` with the current ones.
   StageSet changed_files(const SceneDesc& desc, std::map<std::string, std::string>& stamps) const;
+  // The compile itself; `references` (listed only for stand-ins) are the files in use.
+  CompileResult compile_world(const SceneDesc& desc, const CompileOptions& options,
+                              const std::vector<AssetReference>& references);
 
   AssetCache assets_;
   CompileCounters counters_;
@@ -60,7 +73,8 @@ class SceneCompiler {
   std::shared_ptr<const RenderScene> last_;
   size_t last_document_materials_ = 0;  // last_->materials before the stroke materials
   std::vector<std::vector<std::string>> material_keys_;  // per material: the cache entries it was built from
-  std::map<std::string, std::string> file_stamps_;  // asset file -> stamp, at the last compile  // the cache entries the material table was built from
+  std::map<std::string, std::string> file_stamps_;  // asset file -> stamp, at the last compile
+  std::vector<std::string> asset_warnings_;  // the missing and unreadable files last reported
 };
 
 CompileResult compile_scene(const SceneDesc& desc, const CompileOptions& options = {});

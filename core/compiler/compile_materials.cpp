@@ -191,13 +191,9 @@ struct ClearTextures {
   }
 };
 
-// What a graph that does not compile looks like in the editor: loud, and unlit so
-// no light hides it.
-Material broken_graph_stand_in() {
-  return UnlitMaterial{CheckerTexture{Color(1.f, 0.f, 1.f), Color(0.05f, 0.f, 0.05f), 40.f}};
-}
-
 }  // namespace
+
+Material stand_in_material(float squares) { return UnlitMaterial{CheckerTexture{kStandInEven, kStandInOdd, squares}}; }
 
 std::optional<Material> compile_closure_template(const MaterialVariant& data, const std::filesystem::path& base_dir,
                                                  AssetCache& assets, std::string* error) {
@@ -233,7 +229,7 @@ size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<
       start = end + 1;
     }
     if (stand_in) {
-      compiled[i] = broken_graph_stand_in();
+      compiled[i] = stand_in_material(40.f);
     } else {
       compiled[i].reset();
     }

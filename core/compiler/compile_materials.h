@@ -30,4 +30,9 @@ size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<
                          AssetCache& assets, std::vector<std::vector<std::string>>& keys,
                          const LastMaterials& last = {}, std::vector<std::string>* broken_graphs = nullptr);
 
+// The loud look of what cannot be drawn as described (a broken graph, strokes whose
+// brush image is missing): the stand-in checker, `squares` across the uv square,
+// unlit so no light hides it.
+Material stand_in_material(float squares);
+
 }  // namespace inkray

@@ -57,6 +57,39 @@ std::shared_ptr<const Shape> object_space_mesh(const ShapeVariant& shape, Object
       shape);
 }
 
+// Places an object-space shape's BVH by the object's transform; `from` is the BVH's key.
+std::shared_ptr<const PlacedShape> place_mesh(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
+                                              const std::string& key, const std::string& from, ObjectBuild& build) {
+  auto placed = std::make_shared<PlacedShape>();
+  placed->bvh = std::move(bvh);
+  placed->to_world = to_world;
+  if (to_world.is_identity()) {
+    placed->world = placed->bvh->shared_shape();
+  } else {
+    placed->world = std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(placed->bvh->shape()), to_world));
+    ++build.counters.placements;
+  }
+  placed->problem = world_extent_problem(*placed->world);
+  // A mesh's BVH is kept while a placement of it is.
+  return build.assets.keep<PlacedShape>(key, std::move(placed), {from});
+}
+
+// What stands in for a mesh that cannot be read. Under keys of its own, never the
+// file's, so the file is read as soon as it can be.
+std::shared_ptr<const PlacedShape> place_stand_in(const ObjectDesc& object, ObjectBuild& build, std::string* key) {
+  *key = "placed|stand-in box|" + param_key(object.transform);
+  if (auto found = build.assets.find<PlacedShape>(*key)) return found;
+  const std::string bvh_key = "bvh|stand-in box";
+  auto bvh = build.assets.find<ShapeBvh>(bvh_key);
+  if (!bvh) {
+    const Point3 half(0.5f);
+    bvh = build.assets.keep(bvh_key, std::make_shared<const ShapeBvh>(
+                                         std::make_shared<const Shape>(make_box(-half, half, Transform{}))));
+    ++build.counters.shape_bvhs;
+  }
+  return place_mesh(std::move(bvh), transform_from_desc(object.transform), *key, bvh_key, build);
+}
+
 }  // namespace
 
 Transform transform_from_desc(const TransformDesc& desc) {
@@ -79,36 +112,26 @@ std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, Object
   if (auto found = build.assets.find<PlacedShape>(*key)) return found;
 
   const Transform to_world = transform_from_desc(object.transform);
-  auto placed = std::make_shared<PlacedShape>();
   if (const auto* sphere = std::get_if<SphereDesc>(&object.shape)) {
     // Spheres are intersected analytically under their transform, in a one-primitive
     // BVH: rebuilding it costs no more than moving an instance.
+    auto placed = std::make_shared<PlacedShape>();
     auto shape = std::make_shared<const Shape>(Sphere{sphere->center, sphere->radius, to_world});
     placed->bvh = std::make_shared<const ShapeBvh>(shape);
     placed->world = std::move(shape);
     ++build.counters.shape_bvhs;
-  } else {
-    const std::string bvh_key = "bvh|" + shape_key;
-    placed->bvh = build.assets.find<ShapeBvh>(bvh_key);
-    if (!placed->bvh) {
-      auto shape = object_space_mesh(object.shape, build, error);
-      if (!shape) return nullptr;
-      placed->bvh = build.assets.keep(bvh_key, std::make_shared<const ShapeBvh>(std::move(shape)));
-      ++build.counters.shape_bvhs;
-    }
-    placed->to_world = to_world;
-    if (to_world.is_identity()) {
-      placed->world = placed->bvh->shared_shape();
-    } else {
-      placed->world = std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(placed->bvh->shape()), to_world));
-      ++build.counters.placements;
-    }
+    placed->problem = world_extent_problem(*placed->world);
+    return build.assets.keep<PlacedShape>(*key, std::move(placed));
   }
-  placed->problem = world_extent_problem(*placed->world);
-  // A sphere's BVH is its own; a mesh's is kept while a placement of it is.
-  std::vector<std::string> from;
-  if (!std::holds_alternative<SphereDesc>(object.shape)) from.push_back("bvh|" + shape_key);
-  return build.assets.keep<PlacedShape>(*key, std::move(placed), std::move(from));
+  const std::string bvh_key = "bvh|" + shape_key;
+  auto bvh = build.assets.find<ShapeBvh>(bvh_key);
+  if (!bvh) {
+    auto shape = object_space_mesh(object.shape, build, error);
+    if (!shape) return build.stand_ins ? place_stand_in(object, build, key) : nullptr;
+    bvh = build.assets.keep(bvh_key, std::make_shared<const ShapeBvh>(std::move(shape)));
+    ++build.counters.shape_bvhs;
+  }
+  return place_mesh(std::move(bvh), to_world, *key, bvh_key, build);
 }
 
 }  // namespace inkray

@@ -24,11 +24,14 @@ struct ObjectBuild {
   AssetCache& assets;
   CompileCounters& counters;
   std::filesystem::path base_dir;
+  bool stand_ins = false;  // CompileOptions::stand_in_for_missing_assets
 };
 
 // The object's shape placed by its transform, from the cache when nothing that
 // shapes it changed. *key names what shaped it (the shape, the mesh file's stamp,
-// the transform). Null with *error set when its mesh cannot be read.
+// the transform). Null with *error set when its mesh cannot be read; with
+// build.stand_ins, a unit box centred on the object's origin instead (*error set
+// all the same), so the user sees where the mesh belongs.
 std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build, std::string* key,
                                                 std::string* error);
 

@@ -2,6 +2,7 @@
 // BVH is committed so the strokes are traced like any other surface.
 #include "core/compiler/compile_strokes.h"
 
+#include "core/compiler/compile_materials.h"
 #include "core/npr/strokes/brush.h"
 #include "core/npr/strokes/stroke_color.h"
 #include "core/npr/strokes/stroke_mesh.h"
@@ -30,14 +31,20 @@ struct BuiltStrokes {
   uint32_t base_object = 0;
   std::string key;
   std::shared_ptr<const StrokeShape> shape;
+  bool stand_in = false;  // its brush image could not be read: painted in the stand-in checker
 };
 
-// Everything a StrokeShape depends on: the emitter without its name and colour jitter.
-std::string shape_key(const SceneDesc& desc, const StrokeEmitterDesc& e, const std::string& object_key) {
+// Everything a StrokeShape depends on: the emitter without its name and colour jitter,
+// and the brush image's stamp (an image changed on disk, or found, is a new brush).
+std::string shape_key(const SceneDesc& desc, const StrokeEmitterDesc& e, const std::string& object_key,
+                      bool stand_in) {
   StrokeEmitterDesc shape_only = e;
   shape_only.name.clear();
   shape_only.hue_jitter = shape_only.saturation_jitter = shape_only.value_jitter = 0.f;
-  return "strokes|" + desc.base_dir.string() + "|" + param_key(shape_only) + "|" + object_key;
+  std::string brush;
+  if (e.brush == BrushKind::image) brush = file_stamp(desc.base_dir / e.brush_image).value_or("missing");
+  if (stand_in) brush += "|stand-in";
+  return "strokes|" + desc.base_dir.string() + "|" + param_key(shape_only) + "|" + brush + "|" + object_key;
 }
 
 // Everything the colours depend on beyond the shape: the jitter, and the material
@@ -92,7 +99,8 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
     errors.push_back(where + error);
     return std::nullopt;
   }
-  BuiltStrokes built{&e, *object, shape_key(desc, e, object_keys[*object]), nullptr};
+  const bool stand_in = brush == stand_in_brush();
+  BuiltStrokes built{&e, *object, shape_key(desc, e, object_keys[*object], stand_in), nullptr, stand_in};
   built.shape = build.assets.find<StrokeShape>(built.key);
   if (!built.shape) {
     const auto surface = StrokeSurface::from_shape(scene.geometry.shape(*object), &error);
@@ -134,7 +142,9 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
   if (!errors.empty() || build.cancel.requested()) return;
   for (BuiltStrokes& b : built) {
     const uint32_t material = uint32_t(scene.materials.size());
-    scene.materials.push_back(DiffuseMaterial{ConstantTexture{Color(1.f)}});
+    // Unlit, the stand-in ignores the paint: 2 x 2 squares a stroke.
+    scene.materials.push_back(b.stand_in ? stand_in_material(2.f)
+                                         : Material(DiffuseMaterial{ConstantTexture{Color(1.f)}}));
     scene.material_names.push_back(b.emitter->name + ".strokes");
     // Copy the base object's record so whatever else it carries (its outline
     // overrides) applies to its strokes too.

@@ -25,7 +25,8 @@ struct StrokeBuild {
 // each emitter with a positive count whose object was compiled (hidden objects
 // grow no strokes): places, grows and meshes the strokes, appends a white
 // DiffuseMaterial "<emitter>.strokes" (the strokes' vertex colours carry their
-// paint) and an object "<emitter>" whose `source` is the base object's, so
+// paint; the stand-in checker when the brush image is a stand-in, asset_cache.h)
+// and an object "<emitter>" whose `source` is the base object's, so
 // picking a stroke picks what it was painted on. Problems are appended to
 // errors as `strokes[i] "name": ...`. A scene without emitters does nothing.
 // Stops early, leaving the scene unfinished, once `build.cancel` is requested.

@@ -2,6 +2,7 @@
 // asset type needs no change here.
 #include "core/document/asset_paths.h"
 
+#include "core/document/error_log.h"
 #include "core/document/tagged_variant.h"
 
 #include <string>
@@ -12,52 +13,98 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Rebaser {
-  const fs::path& from;  // absolute, normalised
-  const fs::path& to;    // absolute, normalised
+using PathVisit = std::function<void(const AssetSite&, std::string& path)>;
+
+struct PathFinder {
+  std::string at;  // JSON path of the struct being visited
+  const AssetSite& owner;
+  const PathVisit& f;
 
   template <class T>
   void operator()(const Param& p, T& field) {
     if constexpr (std::is_same_v<T, std::string>) {
-      if (p.kind == ParamKind::path) field = rebase(field);
+      if (p.kind != ParamKind::path) return;
+      AssetSite site = owner;
+      site.at = child_path(at, p.name);
+      site.type = p.file_type;
+      f(site, field);
     } else if constexpr (std::is_same_v<T, ColorInput>) {
-      visit_tagged(field);
+      visit_tagged(child_path(at, p.name), field);
     } else if constexpr (std::is_same_v<T, std::vector<GraphNodeDesc>>) {
-      for (GraphNodeDesc& node : field) visit_tagged(node.data);
+      for (size_t i = 0; i < field.size(); ++i)
+        visit_tagged(element_path(child_path(at, p.name), i), field[i].data);
+    } else if constexpr (requires(PathFinder & inner) { visit_params(field, inner); }) {
+      PathFinder inner{child_path(at, p.name), owner, f};  // a group
+      visit_params(field, inner);
+    } else if constexpr (requires(PathFinder & inner) { visit_params(field.front(), inner); }) {
+      for (size_t i = 0; i < field.size(); ++i) {  // a list
+        PathFinder inner{element_path(child_path(at, p.name), i), owner, f};
+        visit_params(field[i], inner);
+      }
     }
   }
 
   template <class Variant>
-  void visit_tagged(Variant& value) {
+  void visit_tagged(const std::string& path, Variant& value) {
     std::visit(
         [&]<class A>(A& alternative) {
-          if constexpr (Tagged<A>) visit_params(alternative, *this);
+          if constexpr (Tagged<A>) {
+            PathFinder inner{path, owner, f};
+            visit_params(alternative, inner);
+          }
         },
         value);
   }
-
-  std::string rebase(const std::string& written) const {
-    if (written.empty() || written.find('\0') != std::string::npos) return written;
-    const fs::path p(written);
-    if (p.is_absolute()) return written;
-    const fs::path target = (from / p).lexically_normal();
-    const fs::path relative = target.lexically_relative(to);
-    return (relative.empty() ? target : relative).generic_string();
-  }
 };
 
+std::string rebase(const std::string& written, const fs::path& from, const fs::path& to) {
+  if (written.empty() || written.find('\0') != std::string::npos) return written;
+  const fs::path p(written);
+  if (p.is_absolute()) return written;
+  const fs::path target = (from / p).lexically_normal();
+  const fs::path relative = target.lexically_relative(to);
+  return (relative.empty() ? target : relative).generic_string();
+}
+
 }  // namespace
+
+void for_each_asset_path(SceneDesc& scene, const PathVisit& f) {
+  const auto section = [&](auto& items, const char* name, const char* noun, auto&& visit) {
+    for (size_t i = 0; i < items.size(); ++i) {
+      const AssetSite owner{{}, std::string(noun) + " " + in_quotes(items[i].name)};
+      visit(element_path(name, i), items[i], owner);
+    }
+  };
+  const AssetSite environment{{}, "the environment"};
+  PathFinder{{}, environment, f}.visit_tagged("environment", scene.environment);
+  section(scene.materials, "materials", "material",
+          [&](const std::string& at, MaterialDesc& m, const AssetSite& owner) {
+            PathFinder{{}, owner, f}.visit_tagged(at, m.data);
+          });
+  section(scene.objects, "objects", "object",
+          [&](const std::string& at, ObjectDesc& o, const AssetSite& owner) {
+            PathFinder finder{at, owner, f};
+            visit_params(o, finder);
+            finder.visit_tagged(at + ".shape", o.shape);
+          });
+  section(scene.lights, "lights", "light", [&](const std::string& at, LightDesc& l, const AssetSite& owner) {
+    PathFinder{{}, owner, f}.visit_tagged(at, l.data);
+  });
+  section(scene.strokes, "strokes", "stroke emitter",
+          [&](const std::string& at, StrokeEmitterDesc& s, const AssetSite& owner) {
+            // An emitter's one path is its brush image, read only by the image brush.
+            AssetSite emitter = owner;
+            emitter.in_use = s.brush == BrushKind::image;
+            PathFinder finder{at, emitter, f};
+            visit_params(s, finder);
+          });
+}
 
 void rebase_asset_paths(SceneDesc& scene, const fs::path& from_dir, const fs::path& to_dir) {
   const fs::path from = fs::absolute(from_dir).lexically_normal();
   const fs::path to = fs::absolute(to_dir).lexically_normal();
   if (from == to) return;
-  Rebaser r{from, to};
-  r.visit_tagged(scene.environment);
-  for (auto& m : scene.materials) r.visit_tagged(m.data);
-  for (auto& o : scene.objects) r.visit_tagged(o.shape);
-  for (auto& l : scene.lights) r.visit_tagged(l.data);
-  for (auto& s : scene.strokes) visit_params(s, r);
+  for_each_asset_path(scene, [&](const AssetSite&, std::string& path) { path = rebase(path, from, to); });
 }
 
 }  // namespace inkray

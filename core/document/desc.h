@@ -37,11 +37,11 @@ struct LineOverrideDesc {
   bool operator==(const LineOverrideDesc&) const = default;
 };
 template <class V> void visit_params(LineOverrideDesc& d, V& v) {
-  v(toggle("exclude", "This surface produces no outlines"), d.exclude);
-  v(toggle("stop_lines", "Outlines are not seen through this mirror or glass"), d.stop_lines);
-  v(number("width_scale", 0, 100, "Multiplies the outline width on this surface"), d.width_scale);
+  v(toggle("exclude", "This surface produces no outlines").labelled("No outlines"), d.exclude);
+  v(toggle("stop_lines", "Outlines are not seen through this mirror or glass").labelled("Hide lines behind"), d.stop_lines);
+  v(number("width_scale", 0, 100, "Multiplies the outline width on this surface").log_slider(0.1, 10), d.width_scale);
   v(toggle("override_color", "Draw this surface's lines in `color`"), d.override_color);
-  v(color("color", 1e3, "Line colour when override_color is set"), d.color);
+  v(color("color", 1e3, "Line colour when override_color is set").labelled("Line colour"), d.color);
 }
 
 struct MaterialDesc {
@@ -60,7 +60,7 @@ struct SphereDesc {
 };
 template <class V> void visit_params(SphereDesc& d, V& v) {
   v(point("center", "Centre in object space"), d.center);
-  v(number("radius", 1e-12, 1e12, "Radius in object space"), d.radius);
+  v(number("radius", 1e-12, 1e12, "Radius in object space").log_slider(0.01, 100), d.radius);
 }
 
 struct QuadDesc {
@@ -93,7 +93,7 @@ struct MeshDesc {
   bool operator==(const MeshDesc&) const = default;
 };
 template <class V> void visit_params(MeshDesc& d, V& v) {
-  v(required(path("path", "Wavefront OBJ file, relative to the scene file")), d.path);
+  v(required(path("path", "Wavefront OBJ file, relative to the scene file")).files(FileType::mesh).labelled("OBJ file"), d.path);
 }
 
 using ShapeVariant = std::variant<SphereDesc, QuadDesc, BoxDesc, MeshDesc>;
@@ -106,7 +106,7 @@ struct RotationDesc {
 };
 template <class V> void visit_params(RotationDesc& d, V& v) {
   v(direction("axis", "Rotation axis"), d.axis);
-  v(number("degrees", -1e6, 1e6, "Right-handed angle about the axis"), d.degrees);
+  v(number("degrees", -1e6, 1e6, "Right-handed angle about the axis").slider(-180, 180).labelled("Angle"), d.degrees);
 }
 
 struct TransformDesc {
@@ -127,7 +127,7 @@ struct ObjectDesc {
 };
 template <class V> void visit_params(ObjectDesc& d, V& v) {
   v(text("name", "Unique object name"), d.name);
-  v(required(text("material", "Name of the object's material")), d.material);
+  v(required(text("material", "Name of the object's material")).refers(Ref::material), d.material);
   v(toggle("visible", "Hidden objects are not rendered"), d.visible);
   v(group("lines", "Outline overrides for this object"), d.lines);
 }
@@ -143,7 +143,7 @@ struct PointLightDesc {
 template <class V> void visit_params(PointLightDesc& d, V& v) {
   v(point("position", "Position"), d.position);
   v(color("color", 1e6, "Colour"), d.color);
-  v(number("intensity", 0, 1e9, "Radiant intensity: color * intensity per steradian"), d.intensity);
+  v(number("intensity", 0, 1e9, "Radiant intensity: color * intensity per steradian").log_slider(0.1, 1e4), d.intensity);
 }
 
 struct SpotLightDesc {
@@ -160,8 +160,8 @@ template <class V> void visit_params(SpotLightDesc& d, V& v) {
   v(point("position", "Position"), d.position);
   v(point("target", "Point the spot aims at"), d.target);
   v(color("color", 1e6, "Colour"), d.color);
-  v(number("intensity", 0, 1e9, "Radiant intensity on the axis"), d.intensity);
-  v(number("cone_angle", 0.01, 90, "Half-angle in degrees where the light ends"), d.cone_angle);
+  v(number("intensity", 0, 1e9, "Radiant intensity on the axis").log_slider(0.1, 1e4), d.intensity);
+  v(number("cone_angle", 0.01, 90, "Half-angle in degrees where the light ends").slider(1, 90), d.cone_angle);
   v(number("falloff_angle", 0, 90, "Half-angle in degrees where the smooth falloff starts"), d.falloff_angle);
 }
 
@@ -175,7 +175,7 @@ struct DirectionalLightDesc {
 template <class V> void visit_params(DirectionalLightDesc& d, V& v) {
   v(direction("direction", "Direction the light travels"), d.direction);
   v(color("color", 1e6, "Colour"), d.color);
-  v(number("intensity", 0, 1e9, "Irradiance on a surface facing the light"), d.intensity);
+  v(number("intensity", 0, 1e9, "Irradiance on a surface facing the light").log_slider(0.01, 100), d.intensity);
 }
 
 using LightVariant = std::variant<PointLightDesc, SpotLightDesc, DirectionalLightDesc>;
@@ -225,9 +225,9 @@ template <class V> void visit_params(CameraDesc& d, V& v) {
   v(point("look_from", "Eye position"), d.look_from);
   v(point("look_at", "Point at the image centre"), d.look_at);
   v(direction("up", "Up direction"), d.up);
-  v(number("vfov", 0.01, 179, "Vertical field of view in degrees"), d.vfov);
-  v(number("aperture", 0, 1e6, "Lens diameter; 0 is a pinhole"), d.aperture);
-  v(number("focus_distance", 0, 1e12, "Distance in focus; 0 focuses on look_at"), d.focus_distance);
+  v(number("vfov", 0.01, 179, "Vertical field of view in degrees").slider(5, 120).labelled("Field of view"), d.vfov);
+  v(number("aperture", 0, 1e6, "Lens diameter; 0 is a pinhole").log_slider(0.001, 10), d.aperture);
+  v(number("focus_distance", 0, 1e12, "Distance in focus; 0 focuses on look_at").log_slider(0.1, 1000), d.focus_distance);
 }
 
 enum class PixelFilter { box, gaussian };
@@ -249,18 +249,18 @@ struct RenderSettings {
   bool operator==(const RenderSettings&) const = default;
 };
 template <class V> void visit_params(RenderSettings& d, V& v) {
-  v(at(Stage::film, integer("width", 1, 16384, "Image width in pixels")), d.width);
-  v(at(Stage::film, integer("height", 1, 16384, "Image height in pixels")), d.height);
-  v(at(Stage::limits, integer("spp", 1, 1 << 20, "Samples per pixel")), d.spp);
-  v(at(Stage::limits, number("time_limit", 0, 1e7, "Stop after this many seconds; 0 means no limit")), d.time_limit);
-  v(at(Stage::sampling, integer("max_depth", 1, 1024, "Maximum path length in bounces")), d.max_depth);
+  v(at(Stage::film, integer("width", 1, 16384, "Image width in pixels").log_slider(64, 8192)), d.width);
+  v(at(Stage::film, integer("height", 1, 16384, "Image height in pixels").log_slider(64, 8192)), d.height);
+  v(at(Stage::limits, integer("spp", 1, 1 << 20, "Samples per pixel").log_slider(1, 16384)), d.spp);
+  v(at(Stage::limits, number("time_limit", 0, 1e7, "Stop after this many seconds; 0 means no limit").log_slider(1, 3600)), d.time_limit);
+  v(at(Stage::sampling, integer("max_depth", 1, 1024, "Maximum path length in bounces").slider(1, 64)), d.max_depth);
   v(at(Stage::sampling, integer("seed", 0, 2147483647, "Seed of every random decision")), d.seed);
-  v(at(Stage::sampling, number("clamp", 0, 1e9, "Clamp sample luminance to this value; 0 is off")), d.clamp);
-  v(at(Stage::sampling, choice("filter", kPixelFilterNames, "Pixel reconstruction filter")), d.filter);
-  v(at(Stage::sampling, number("filter_radius", 0.01, 8, "Filter radius in pixels")), d.filter_radius);
-  v(at(Stage::resolve, choice("painterly", kPainterlyFilterNames, "Painterly filter over the resolved image")), d.painterly);
-  v(at(Stage::resolve, number("painterly_radius", 0.5, 64, "Painterly filter radius, pixels at 1080 lines")), d.painterly_radius);
-  v(at(Stage::resolve, number("painterly_sharpness", 0, 64, "Painterly filter sector sharpness")), d.painterly_sharpness);
+  v(at(Stage::sampling, number("clamp", 0, 1e9, "Clamp sample luminance to this value; 0 is off").log_slider(1, 1e4).labelled("Clamp luminance")), d.clamp);
+  v(at(Stage::sampling, choice("filter", kPixelFilterNames, "Pixel reconstruction filter").labelled("Pixel filter")), d.filter);
+  v(at(Stage::sampling, number("filter_radius", 0.01, 8, "Filter radius in pixels").slider(0.25, 4)), d.filter_radius);
+  v(at(Stage::resolve, choice("painterly", kPainterlyFilterNames, "Painterly filter over the resolved image").labelled("Painterly filter")), d.painterly);
+  v(at(Stage::resolve, number("painterly_radius", 0.5, 64, "Painterly filter radius, pixels at 1080 lines").log_slider(0.5, 64)), d.painterly_radius);
+  v(at(Stage::resolve, number("painterly_sharpness", 0, 64, "Painterly filter sector sharpness").slider(0, 32)), d.painterly_sharpness);
 }
 
 // ---------------------------------------------------------------- the document

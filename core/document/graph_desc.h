@@ -56,7 +56,7 @@ template <class V> void visit_params(GraphEditorDesc& d, V& v) {
   v(at(Stage::layout, list("nodes", "Node positions on the canvas")), d.nodes);
   v(at(Stage::layout, number("pan_x", -1e7, 1e7, "Canvas scroll, x")), d.pan_x);
   v(at(Stage::layout, number("pan_y", -1e7, 1e7, "Canvas scroll, y")), d.pan_y);
-  v(at(Stage::layout, number("zoom", 0.1, 10, "Canvas zoom")), d.zoom);
+  v(at(Stage::layout, number("zoom", 0.1, 10, "Canvas zoom").log_slider(0.1, 10)), d.zoom);
 }
 
 struct GraphDesc {

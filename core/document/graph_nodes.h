@@ -63,7 +63,7 @@ struct ImageTextureNode {
   bool operator==(const ImageTextureNode&) const = default;
 };
 template <class V> void visit_params(ImageTextureNode& d, V& v) {
-  v(required(path("path", "Image file, relative to the scene file")), d.path);
+  v(required(path("path", "Image file, relative to the scene file")).files(FileType::image).labelled("Image file"), d.path);
   v(toggle("srgb", "Decode 8-bit texels from sRGB to linear"), d.srgb);
 }
 
@@ -82,7 +82,7 @@ struct CheckerNode {
 template <class V> void visit_params(CheckerNode& d, V& v) {
   v(color("color1", 1e6, "Colour of even squares"), d.color1);
   v(color("color2", 1e6, "Colour of odd squares"), d.color2);
-  v(number("scale", 0, 1e6, "Squares per unit"), d.scale);
+  v(number("scale", 0, 1e6, "Squares per unit").log_slider(0.1, 1000), d.scale);
 }
 
 enum class NoiseType { value, gradient };
@@ -105,9 +105,9 @@ struct NoiseNode {
 template <class V> void visit_params(NoiseNode& d, V& v) {
   v(choice("noise", kNoiseTypeNames, "Value noise or gradient (Perlin) noise"), d.noise);
   v(integer("octaves", 1, 16, "Octaves of fractal detail"), d.octaves);
-  v(number("scale", 0, 1e6, "Features per unit"), d.scale);
+  v(number("scale", 0, 1e6, "Features per unit").log_slider(0.1, 100), d.scale);
   v(number("roughness", 0, 1, "Amplitude of each octave relative to the last"), d.roughness);
-  v(number("distortion", 0, 1e3, "Warps the lookup by another noise"), d.distortion);
+  v(number("distortion", 0, 1e3, "Warps the lookup by another noise").slider(0, 10), d.distortion);
 }
 
 struct VoronoiNode {
@@ -123,7 +123,7 @@ struct VoronoiNode {
   bool operator==(const VoronoiNode&) const = default;
 };
 template <class V> void visit_params(VoronoiNode& d, V& v) {
-  v(number("scale", 0, 1e6, "Cells per unit"), d.scale);
+  v(number("scale", 0, 1e6, "Cells per unit").log_slider(0.1, 100), d.scale);
   v(number("randomness", 0, 1, "How far cell points stray from a regular grid"), d.randomness);
 }
 
@@ -151,7 +151,7 @@ struct ColorRampNode {
   bool operator==(const ColorRampNode&) const = default;
 };
 template <class V> void visit_params(ColorRampNode& d, V& v) {
-  v(number("fac", -1e9, 1e9, "Position on the ramp, clamped to [0, 1]"), d.fac);
+  v(number("fac", -1e9, 1e9, "Position on the ramp, clamped to [0, 1]").slider(0, 1), d.fac);
   v(choice("interpolation", kRampModeNames, "How colours between stops are blended"), d.interpolation);
   v(list("stops", "Stops: {\"position\": p, \"color\": c}, in any order"), d.stops);
 }
@@ -252,8 +252,8 @@ struct HsvNode {
 };
 template <class V> void visit_params(HsvNode& d, V& v) {
   v(number("hue", 0, 1, "Hue shift; 0.5 keeps the hue"), d.hue);
-  v(number("saturation", 0, 1e3, "Multiplies saturation"), d.saturation);
-  v(number("value", 0, 1e3, "Multiplies value"), d.value);
+  v(number("saturation", 0, 1e3, "Multiplies saturation").slider(0, 2), d.saturation);
+  v(number("value", 0, 1e3, "Multiplies value").slider(0, 2), d.value);
   v(number("fac", 0, 1, "Blend of the adjusted colour over the input"), d.fac);
   v(color("color", 1e6, "The colour to adjust"), d.color);
 }
@@ -341,7 +341,7 @@ struct FresnelNode {
   bool operator==(const FresnelNode&) const = default;
 };
 template <class V> void visit_params(FresnelNode& d, V& v) {
-  v(number("ior", 1, 10, "Index of refraction"), d.ior);
+  v(number("ior", 1, 10, "Index of refraction").slider(1, 3), d.ior);
 }
 
 struct LayerWeightNode {

@@ -24,8 +24,8 @@ struct ImageTextureDesc {
   bool operator==(const ImageTextureDesc&) const = default;
 };
 template <class V> void visit_params(ImageTextureDesc& d, V& v) {
-  v(required(path("path", "Image file, relative to the scene file")), d.path);
-  v(color("scale", 1e6, "Multiplies every texel"), d.scale);
+  v(required(path("path", "Image file, relative to the scene file")).files(FileType::image).labelled("Image file"), d.path);
+  v(color("scale", 1e6, "Multiplies every texel").labelled("Tint"), d.scale);
   v(toggle("srgb", "Decode 8-bit texels from sRGB to linear"), d.srgb);
 }
 
@@ -39,7 +39,7 @@ struct CheckerTextureDesc {
 template <class V> void visit_params(CheckerTextureDesc& d, V& v) {
   v(color("even", 1e6, "Colour of even squares"), d.even);
   v(color("odd", 1e6, "Colour of odd squares"), d.odd);
-  v(number("scale", 1e-6, 1e6, "Squares per unit of texture coordinate"), d.scale);
+  v(number("scale", 1e-6, 1e6, "Squares per unit of texture coordinate").log_slider(0.1, 1000), d.scale);
 }
 
 // A colour parameter: a constant (JSON [r,g,b] or a number), or a texture object.
@@ -80,7 +80,7 @@ struct DielectricDesc {
   bool operator==(const DielectricDesc&) const = default;
 };
 template <class V> void visit_params(DielectricDesc& d, V& v) {
-  v(number("ior", 1.0001, 4, "Index of refraction of the inside"), d.ior);
+  v(number("ior", 1.0001, 4, "Index of refraction of the inside").slider(1.0001, 2.5), d.ior);
   v(number("roughness", 0, 1, "GGX roughness; 0 is smooth glass"), d.roughness);
   v(color("tint", 1, "Multiplies transmitted light"), d.tint);
 }
@@ -96,7 +96,7 @@ struct EmissiveDesc {
 };
 template <class V> void visit_params(EmissiveDesc& d, V& v) {
   v(color_input("color", "Emitted colour"), d.color);
-  v(number("strength", 0, 1e7, "Radiance scale: radiance = color * strength"), d.strength);
+  v(number("strength", 0, 1e7, "Radiance scale: radiance = color * strength").log_slider(0.01, 1e4), d.strength);
   v(toggle("two_sided", "Emit from both sides (default: the front, along the normal)"), d.two_sided);
 }
 
@@ -159,14 +159,14 @@ template <class V> void visit_params(ToonDesc& d, V& v) {
   v(number("threshold", 0, 1, "Cel threshold: light level where the first band starts"), d.threshold);
   v(number("softness", 0, 0.5, "Width of the transition between bands"), d.softness);
   v(color_list("ramp", "Colour ramp over the light level (evenly spaced); replaces bands when set"), d.ramp);
-  v(path("ramp_image", "2D ramp image: u = light level, v = ramp_axis (X-toon)"), d.ramp_image);
+  v(path("ramp_image", "2D ramp image: u = light level, v = ramp_axis (X-toon)").files(FileType::image), d.ramp_image);
   v(choice("ramp_axis", kToonRampAxisNames, "Second axis of the 2D ramp"), d.ramp_axis);
-  v(number("ramp_near", 0, 1e9, "Depth mapped to v = 0 when ramp_axis is depth"), d.ramp_near);
-  v(number("ramp_far", 0, 1e9, "Depth mapped to v = 1 when ramp_axis is depth"), d.ramp_far);
+  v(number("ramp_near", 0, 1e9, "Depth mapped to v = 0 when ramp_axis is depth").log_slider(0.1, 1000), d.ramp_near);
+  v(number("ramp_far", 0, 1e9, "Depth mapped to v = 1 when ramp_axis is depth").log_slider(0.1, 1000), d.ramp_far);
   v(toggle("specular", "Add a hard specular band"), d.specular);
   v(color("specular_color", 1e3, "Colour of the specular band"), d.specular_color);
   v(number("specular_size", 0, 1, "Size of the specular band"), d.specular_size);
-  v(number("shininess", 1, 1e4, "Blinn-Phong exponent the band is cut from"), d.shininess);
+  v(number("shininess", 1, 1e4, "Blinn-Phong exponent the band is cut from").log_slider(1, 1000), d.shininess);
   v(toggle("rim", "Add a rim light"), d.rim);
   v(color("rim_color", 1e3, "Colour of the rim light"), d.rim_color);
   v(number("rim_width", 0, 1, "Width of the rim in facing ratio"), d.rim_width);
@@ -184,9 +184,9 @@ struct MixDesc {
   bool operator==(const MixDesc&) const = default;
 };
 template <class V> void visit_params(MixDesc& d, V& v) {
-  v(required(text("a", "Material used where the factor is 0")), d.a);
-  v(required(text("b", "Material used where the factor is 1")), d.b);
-  v(color_input("factor", "Blend weight (luminance of a colour or texture)"), d.factor);
+  v(required(text("a", "Material used where the factor is 0")).refers(Ref::material).labelled("Material A"), d.a);
+  v(required(text("b", "Material used where the factor is 1")).refers(Ref::material).labelled("Material B"), d.b);
+  v(color_input("factor", "Blend weight (luminance of a colour or texture)").labelled("Blend"), d.factor);
 }
 
 }  // namespace inkray

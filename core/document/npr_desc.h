@@ -27,9 +27,9 @@ struct LineStyleDesc {
 template <class V> void visit_params(LineStyleDesc& d, V& v) {
   v(at(Stage::sampling, toggle("enabled", "Draw this line type")), d.enabled);
   v(at(Stage::resolve, color("color", 1e3, "Line colour (applied when the image is resolved: no re-render)")), d.color);
-  v(at(Stage::sampling, number("width", 0, 100, "Multiplies the outline width")), d.width);
+  v(at(Stage::sampling, number("width", 0, 100, "Multiplies the outline width").log_slider(0.1, 10).labelled("Width scale")), d.width);
   v(at(Stage::resolve, number("opacity", 0, 1, "Line opacity")), d.opacity);
-  v(at(Stage::sampling, number("threshold", 0, 1e6, "Crease: angle in degrees; depth: relative distance jump")), d.threshold);
+  v(at(Stage::sampling, number("threshold", 0, 1e6, "Crease: angle in degrees; depth: relative distance jump").log_slider(0.01, 180)), d.threshold);
 }
 
 struct OutlineDesc {
@@ -56,17 +56,17 @@ struct OutlineDesc {
 };
 template <class V> void visit_params(OutlineDesc& d, V& v) {
   v(at(Stage::sampling, toggle("enabled", "Draw outlines")), d.enabled);
-  v(at(Stage::sampling, integer("quality", 1, 16, "Stencil rays per camera sample: more give clean lines in fewer samples")), d.quality);
-  v(at(Stage::sampling, number("width", 0, 1000, "Line width in `unit`")), d.width);
+  v(at(Stage::sampling, integer("quality", 1, 16, "Stencil rays per camera sample: more give clean lines in fewer samples").labelled("Line quality")), d.quality);
+  v(at(Stage::sampling, number("width", 0, 1000, "Line width in `unit`").log_slider(0.1, 20).labelled("Line width")), d.width);
   v(at(Stage::sampling, choice("unit", kLineWidthUnitNames,
                                "pixels (at reference_height), percent of image height, or world units")),
     d.unit);
-  v(at(Stage::sampling, number("reference_height", 1, 1e5, "Image height that `pixels` refer to")), d.reference_height);
+  v(at(Stage::sampling, number("reference_height", 1, 1e5, "Image height that `pixels` refer to").log_slider(240, 4320)), d.reference_height);
   v(at(Stage::sampling, number("distance_falloff", 0, 4,
                                "Width shrinks as (falloff_start / distance)^falloff beyond falloff_start")),
     d.distance_falloff);
-  v(at(Stage::sampling, number("falloff_start", 0, 1e9, "Distance where the falloff begins")), d.falloff_start);
-  v(at(Stage::sampling, toggle("in_reflections", "Lines appear in mirrors and through glass")), d.in_reflections);
+  v(at(Stage::sampling, number("falloff_start", 0, 1e9, "Distance where the falloff begins").log_slider(0.1, 1000)), d.falloff_start);
+  v(at(Stage::sampling, toggle("in_reflections", "Lines appear in mirrors and through glass").labelled("Show in reflections")), d.in_reflections);
   v(group("silhouette", "Where a surface meets the background or a surface behind it"), d.silhouette);
   v(group("object", "Where one object meets another"), d.object);
   v(group("material", "Where materials change"), d.material);
@@ -101,24 +101,24 @@ struct StrokeEmitterDesc {
 };
 template <class V> void visit_params(StrokeEmitterDesc& d, V& v) {
   v(text("name", "Unique emitter name"), d.name);
-  v(required(text("object", "Object the strokes grow on")), d.object);
+  v(required(text("object", "Object the strokes grow on")).refers(Ref::object), d.object);
   v(integer("seed", 0, 2147483647, "Placement seed: the same seed gives the same strokes"), d.seed);
-  v(integer("count", 0, 10000000, "Number of strokes"), d.count);
-  v(number("width_min", 0, 1e6, "Smallest stroke width, world units"), d.width_min);
-  v(number("width_max", 0, 1e6, "Largest stroke width, world units"), d.width_max);
-  v(number("length_min", 0, 1e6, "Shortest stroke length, world units"), d.length_min);
-  v(number("length_max", 0, 1e6, "Longest stroke length, world units"), d.length_max);
+  v(integer("count", 0, 10000000, "Number of strokes").log_slider(10, 1e6), d.count);
+  v(number("width_min", 0, 1e6, "Smallest stroke width, world units").log_slider(0.001, 1).labelled("Smallest width"), d.width_min);
+  v(number("width_max", 0, 1e6, "Largest stroke width, world units").log_slider(0.001, 1).labelled("Largest width"), d.width_max);
+  v(number("length_min", 0, 1e6, "Shortest stroke length, world units").log_slider(0.01, 10).labelled("Shortest length"), d.length_min);
+  v(number("length_max", 0, 1e6, "Longest stroke length, world units").log_slider(0.01, 10).labelled("Longest length"), d.length_max);
   v(direction("flow", "Flow direction, projected on the surface"), d.flow);
   v(number("rotation_jitter", 0, 180, "Random rotation about the normal, degrees"), d.rotation_jitter);
   v(number("hue_jitter", 0, 180, "Random hue shift, degrees"), d.hue_jitter);
   v(number("saturation_jitter", 0, 1, "Random saturation change"), d.saturation_jitter);
   v(number("value_jitter", 0, 1, "Random value change"), d.value_jitter);
   v(choice("brush", kBrushKindNames, "Brush: procedural bristle or flat, or an image"), d.brush);
-  v(path("brush_image", "Brush image (PNG with alpha), for brush \"image\""), d.brush_image);
-  v(number("bristles", 1, 256, "Bristle count across a procedural stroke"), d.bristles);
+  v(path("brush_image", "Brush image (PNG with alpha), for brush \"image\"").files(FileType::brush), d.brush_image);
+  v(number("bristles", 1, 256, "Bristle count across a procedural stroke").log_slider(1, 64), d.bristles);
   v(number("pressure", 0, 1, "Alpha falloff along the stroke"), d.pressure);
   v(integer("segments", 1, 64, "Ribbon segments along each stroke"), d.segments);
-  v(number("offset", 0, 1e6, "Lift above the surface; 0 picks one from the object's size"), d.offset);
+  v(number("offset", 0, 1e6, "Lift above the surface; 0 picks one from the object's size").log_slider(0.001, 1).labelled("Lift"), d.offset);
 }
 
 // ---------------------------------------------------------------- painterly pixel filter

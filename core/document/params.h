@@ -55,6 +55,11 @@ inline constexpr int kStageCount = int(Stage::strokes) + 1;
 inline constexpr std::array<std::string_view, kStageCount> kStageNames = {
     "inherit", "layout", "limits", "resolve", "camera", "sampling", "film", "material", "light", "object", "geometry", "strokes"};
 
+// What a text parameter names: the editor offers the names that exist.
+enum class Ref : unsigned char { none, material, object, light };
+// What a path parameter names: the editor's browse dialog shows only these files.
+enum class FileType : unsigned char { none, image, mesh, brush };
+
 struct Param {
   std::string_view name;
   std::string_view doc;
@@ -64,9 +69,47 @@ struct Param {
   std::span<const std::string_view> choices = {};  // names for ParamKind::choice, indexed by enum value
   bool required = false;                           // a JSON reader reports it when absent
   Stage stage = Stage::inherit;                    // what a change to it makes stale
+
+  // How the editor presents it; JSON, checks and stages ignore these.
+  std::string_view label = {};  // empty: derived from the name (param_text.h)
+  // What a slider spans, inside [min, max]; a typed value may use the whole hard range.
+  // Infinite: the hard range.
+  double soft_min = -std::numeric_limits<double>::infinity();
+  double soft_max = std::numeric_limits<double>::infinity();
+  bool logarithmic = false;  // scale-like quantities: each step multiplies
+  Ref refers_to = Ref::none;
+  FileType file_type = FileType::none;
+
+  constexpr Param labelled(std::string_view text) const {
+    Param p = *this;
+    p.label = text;
+    return p;
+  }
+  constexpr Param slider(double lo, double hi) const {
+    Param p = *this;
+    p.soft_min = lo;
+    p.soft_max = hi;
+    return p;
+  }
+  constexpr Param log_slider(double lo, double hi) const {
+    Param p = slider(lo, hi);
+    p.logarithmic = true;
+    return p;
+  }
+  constexpr Param refers(Ref what) const {
+    Param p = *this;
+    p.refers_to = what;
+    return p;
+  }
+  constexpr Param files(FileType type) const {
+    Param p = *this;
+    p.file_type = type;
+    return p;
+  }
 };
 
-// Helpers to keep parameter lists short and readable.
+// Helpers to keep parameter lists short and readable. The editor's presentation is
+// added with Param's members: number("width", 0, 1000, "...").log_slider(0.1, 20).
 constexpr Param number(std::string_view name, double min, double max, std::string_view doc) {
   return {name, doc, ParamKind::number, min, max};
 }

@@ -186,6 +186,24 @@ bool read_image_alpha(const std::filesystem::path& file, std::vector<float>* alp
   return true;
 }
 
+bool read_exr(const std::filesystem::path& file, RgbImage* image, std::string* error) {
+  float* rgba = nullptr;
+  int w = 0, h = 0;
+  const char* err = nullptr;
+  if (LoadEXR(&rgba, &w, &h, file.string().c_str(), &err) != TINYEXR_SUCCESS) {
+    *error = file.string() + ": " + (err ? err : "not a readable EXR file");
+    if (err) FreeEXRErrorMessage(err);
+    return false;
+  }
+  image->width = w;
+  image->height = h;
+  image->pixels.resize(size_t(w) * size_t(h));
+  for (size_t i = 0; i < image->pixels.size(); ++i)
+    image->pixels[i] = Color(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]);
+  std::free(rgba);
+  return true;
+}
+
 bool read_pfm(const std::filesystem::path& file, RgbImage* image, std::string* error) {
   std::ifstream in(file, std::ios::binary);
   std::string magic;

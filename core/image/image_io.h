@@ -30,6 +30,8 @@ bool encode_image(const std::filesystem::path& file, const RgbImage& image, std:
 bool write_image(const std::filesystem::path& file, const RgbImage& image, std::string* error);
 // Reads a PFM written by write_image (used by tests and benchmark caches).
 bool read_pfm(const std::filesystem::path& file, RgbImage* image, std::string* error);
+// Reads the colour of an OpenEXR file (as written by write_image), for viewing exports.
+bool read_exr(const std::filesystem::path& file, RgbImage* image, std::string* error);
 // Reads PNG/JPEG/TGA/BMP/HDR to linear RGB; 8-bit images are decoded from sRGB
 // when srgb is true. Returns false and sets *error naming the file on failure.
 bool read_image(const std::filesystem::path& file, bool srgb, RgbImage* image, std::string* error);

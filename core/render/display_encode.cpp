@@ -52,7 +52,7 @@ std::vector<uint8_t> encode_display(const RgbImage& image, const DisplayEncoding
 }
 
 void paint_highlight(std::vector<uint8_t>& rgba, const RgbImage& object_ids, int object,
-                     std::array<uint8_t, 3> rgb, int thickness) {
+                     std::array<uint8_t, 3> rgb, int thickness, std::array<uint8_t, 3> rim) {
   if (object < 0) return;
   const int w = object_ids.width, h = object_ids.height;
   if (rgba.size() != size_t(w) * size_t(h) * 4) return;
@@ -62,12 +62,16 @@ void paint_highlight(std::vector<uint8_t>& rgba, const RgbImage& object_ids, int
   };
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      if (!is_selected(x, y)) continue;
+      uint8_t* px = &rgba[(size_t(y) * size_t(w) + size_t(x)) * 4];
+      if (!is_selected(x, y)) {
+        if (is_selected(x - 1, y) || is_selected(x + 1, y) || is_selected(x, y - 1) || is_selected(x, y + 1))
+          px[0] = rim[0], px[1] = rim[1], px[2] = rim[2];
+        continue;
+      }
       bool edge = false;
       for (int d = 1; d <= std::max(thickness, 1) && !edge; ++d)
         edge = !is_selected(x - d, y) || !is_selected(x + d, y) || !is_selected(x, y - d) || !is_selected(x, y + d);
       if (!edge) continue;
-      uint8_t* px = &rgba[(size_t(y) * size_t(w) + size_t(x)) * 4];
       px[0] = rgb[0], px[1] = rgb[1], px[2] = rgb[2];
     }
   }

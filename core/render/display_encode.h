@@ -24,10 +24,12 @@ struct DisplayEncoding {
 std::vector<uint8_t> encode_display(const RgbImage& image, const DisplayEncoding& encoding);
 
 // Paints the inner border, `thickness` pixels wide, of the pixels whose id
-// equals `object` (ids as stored in the object_id AOV) in `rgb`, so a selection
-// stays visible over any image. A full-resolution film is usually shown a little
-// scaled, where a 1-pixel line blends into its neighbours: use 2 there.
+// equals `object` (ids as stored in the object_id AOV) in `rgb`, and the one-pixel
+// ring just outside it in `rim`, so a selection stays visible over any image and
+// reads apart from any outline, which is one colour. A full-resolution film is
+// usually shown a little scaled, where a 1-pixel line blends into its neighbours:
+// use 2 there.
 void paint_highlight(std::vector<uint8_t>& rgba, const RgbImage& object_ids, int object,
-                     std::array<uint8_t, 3> rgb, int thickness = 1);
+                     std::array<uint8_t, 3> rgb, int thickness = 1, std::array<uint8_t, 3> rim = {24, 14, 0});
 
 }  // namespace inkray

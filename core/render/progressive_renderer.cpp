@@ -128,6 +128,11 @@ std::vector<std::string> ProgressiveRenderer::take_messages() {
   return std::exchange(messages_, {});
 }
 
+std::vector<std::string> ProgressiveRenderer::take_warnings() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(warnings_, {});
+}
+
 void ProgressiveRenderer::run() {
   std::shared_ptr<const RenderScene> scene;  // what the session renders
   for (;;) {
@@ -161,6 +166,7 @@ void ProgressiveRenderer::run() {
       CompileOptions options;
       options.cancel = Cancel(&superseded_);
       options.stand_in_for_broken_graphs = true;  // one bad graph must not blank the viewport
+      options.stand_in_for_missing_assets = true;  // nor a file that moved: it is drawn as a placeholder
       CompileResult compiled = session_.pool().run([&] { return compiler_.compile(*desc, options); });
       std::lock_guard lock(mutex_);
       if (compiled.cancelled) continue;  // the newer document is waiting
@@ -168,7 +174,7 @@ void ProgressiveRenderer::run() {
         messages_.insert(messages_.end(), compiled.errors.begin(), compiled.errors.end());
         continue;  // the last good scene stays on screen
       }
-      messages_.insert(messages_.end(), compiled.warnings.begin(), compiled.warnings.end());
+      warnings_.insert(warnings_.end(), compiled.warnings.begin(), compiled.warnings.end());
       // Line colours, the painterly filter and render limits are read when the film
       // is resolved: the samples so far stay, and the image is composited again.
       keep_film = scene && !restart && compiled.changes.within({Stage::layout, Stage::resolve, Stage::limits});
@@ -241,8 +247,7 @@ bool ProgressiveRenderer::limits_reached(const ViewportLimits& limits) const {
   const RenderStats& s = session_.stats();
   if (limits.spp > 0 && int(s.spp) >= limits.spp) return true;
   if (limits.time_seconds > 0.0 && s.elapsed_seconds >= limits.time_seconds) return true;
-  return limits.noise_target > 0.0 && s.passes >= 4 && s.relative_error > 0.0 &&
-         s.relative_error <= limits.noise_target;
+  return noise_target_reached(s, limits.noise_target);
 }
 
 void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderScene>& scene,
@@ -268,7 +273,7 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
   if (view.highlight_object >= 0 && film.aovs().has(Aov::object_id)) {
     // Previews are magnified, so their 1-pixel line is already thick on screen.
     paint_highlight(snap->rgba, film.resolve_aov(Aov::object_id), view.highlight_object, view.highlight_rgb,
-                    session_.divisor() == 1 ? 2 : 1);
+                    session_.divisor() == 1 ? 2 : 1, view.highlight_rim);
   }
   snap->width = film.width();
   snap->height = film.height();

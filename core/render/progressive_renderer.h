@@ -32,6 +32,7 @@ struct ViewportView {
   DisplayEncoding encoding;
   int highlight_object = -1;  // SceneDesc object index outlined in the viewport
   std::array<uint8_t, 3> highlight_rgb{255, 160, 40};
+  std::array<uint8_t, 3> highlight_rim{24, 14, 0};  // just outside the object: two colours, unlike an outline
 };
 
 struct ViewportLimits {
@@ -89,8 +90,11 @@ class ProgressiveRenderer {
   std::shared_ptr<const ViewportSnapshot> latest() const;
   // The newest compiled scene (for picking on the UI thread; it is immutable).
   std::shared_ptr<const RenderScene> scene() const;
-  // Compile errors since the last call, for the log.
+  // Compile errors since the last call: the newest document did not render.
   std::vector<std::string> take_messages();
+  // Compile warnings since the last call: it renders, with stand-ins (a broken graph, a
+  // missing file) drawn where they are.
+  std::vector<std::string> take_warnings();
   int threads() const { return session_.threads(); }
 
  private:
@@ -118,7 +122,7 @@ class ProgressiveRenderer {
   RegionRect region_;
   bool paused_ = false, stop_ = false, reencode_ = false, restart_ = false;
   uint64_t revisions_ = 0;
-  std::vector<std::string> messages_;
+  std::vector<std::string> messages_, warnings_;
   std::shared_ptr<const ViewportSnapshot> latest_;
   std::shared_ptr<const RenderScene> scene_;
   uint64_t generation_ = 0;

@@ -26,6 +26,12 @@ struct RenderStats {
   uint64_t nonfinite_samples = 0;
 };
 
+// A progressive render's noise limit: the half-buffer estimate is too rough over the
+// first few passes to stop on, so it counts from the fourth. 0: no limit.
+inline bool noise_target_reached(const RenderStats& s, double target) {
+  return target > 0.0 && s.passes >= 4 && s.relative_error > 0.0 && s.relative_error <= target;
+}
+
 class RenderSession {
  public:
   explicit RenderSession(int threads = 0);

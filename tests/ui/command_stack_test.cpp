@@ -1,6 +1,7 @@
 // Undo/redo over the document: apply, undo, redo, merging drags, dirty state.
 #include "ui/command_stack.h"
 #include "ui/document.h"
+#include "ui/scene_edits.h"
 
 #include <gtest/gtest.h>
 
@@ -87,6 +88,45 @@ TEST(Document, MergedEditAfterSaveIsDirty) {
   doc.edit(with_fov(doc.scene(), 31.f), "fov", "k");  // merges into the saved step, yet changes the document
   EXPECT_TRUE(doc.dirty());
   std::filesystem::remove(file);
+}
+
+TEST(Document, UndoOfADeleteSelectsTheItemAgain) {
+  Document doc;
+  SceneDesc scene = doc.scene();
+  ASSERT_FALSE(scene.objects.empty());
+  const Selection deleted{ItemKind::object, int(scene.objects.size()) - 1};
+  ASSERT_TRUE(delete_item(scene, deleted));
+  Selection selection = deleted;
+  doc.edit(std::move(scene), "Delete", {}, selection);
+  selection = {};  // as the editor does after a delete
+  ASSERT_TRUE(doc.undo(&selection));
+  EXPECT_EQ(selection, deleted);
+  EXPECT_TRUE(is_valid(doc.scene(), selection));
+  ASSERT_TRUE(doc.redo(&selection));
+  EXPECT_EQ(selection, Selection{});  // what was selected when the delete was undone
+}
+
+TEST(CommandStack, MergedStepsKeepTheFirstSelection) {
+  CommandStack stack;
+  SceneDesc scene;
+  const Selection first{ItemKind::camera, -1}, later{ItemKind::render, -1};
+  stack.apply(scene, with_fov(scene, 30.f), "fov", "k", first);
+  stack.apply(scene, with_fov(scene, 31.f), "fov", "k", later);
+  Selection selection = later;
+  ASSERT_TRUE(stack.undo(scene, &selection));
+  EXPECT_EQ(selection, first);
+}
+
+TEST(CommandStack, DiscardedStepLeavesNoRedo) {
+  CommandStack stack;
+  SceneDesc scene;
+  const SceneDesc original = scene;
+  stack.apply(scene, with_fov(scene, 30.f), "drag", "gizmo");
+  ASSERT_TRUE(stack.discard_newest(scene));
+  EXPECT_EQ(scene, original);
+  EXPECT_FALSE(stack.can_undo());
+  EXPECT_FALSE(stack.can_redo());  // an Esc leaves nothing to redo
+  EXPECT_FALSE(stack.discard_newest(scene));
 }
 
 }  // namespace

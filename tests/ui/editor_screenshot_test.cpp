@@ -2,7 +2,7 @@
 // the viewport, matching a headless render of the same scene block by block.
 #include "core/image/image_io.h"
 
-#include "tests/support/file_helpers.h"
+#include "tests/support/editor_run.h"
 
 #include <gtest/gtest.h>
 
@@ -35,11 +35,9 @@ float block_mean(const RgbImage& img, float x0, float y0, float x1, float y1) {
 }
 
 TEST(EditorScreenshot, ViewportShowsTheRenderedScene) {
+  if (const std::string why = testing::editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
   int code = 0;
-  run_command("command -v xvfb-run", &code);
-  if (code != 0) GTEST_SKIP() << "xvfb-run is not installed";
   const std::string bin = std::string(INKRAY_BINARY_DIR) + "/bin/";
-  if (!std::filesystem::exists(bin + "inkray")) GTEST_SKIP() << "the editor was not built";
   const auto dir = std::filesystem::temp_directory_path() / "inkray_editor_screenshot_test";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);

@@ -7,7 +7,7 @@
 #include "core/image/image_io.h"
 #include "ui/node_canvas.h"
 
-#include "tests/support/file_helpers.h"
+#include "tests/support/editor_run.h"
 
 #include <gtest/gtest.h>
 
@@ -92,11 +92,9 @@ std::string describe(Rgb8 c) {
 }
 
 TEST(NodeEditorScreenshot, GraphToonRimLayout) {
+  if (const std::string why = testing::editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
   int code = 0;
-  run_command("command -v xvfb-run", &code);
-  if (code != 0) GTEST_SKIP() << "xvfb-run is not installed";
   const std::string bin = std::string(INKRAY_BINARY_DIR) + "/bin/";
-  if (!std::filesystem::exists(bin + "inkray")) GTEST_SKIP() << "the editor was not built";
   const std::string scene_file = std::string(INKRAY_SOURCE_DIR) + "/scenes/graph_toon_rim.json";
   const SceneLoadResult loaded = load_scene(scene_file, ReadFor::editing);
   ASSERT_TRUE(loaded.scene) << loaded.errors.at(0);

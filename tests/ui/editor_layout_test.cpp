@@ -1,0 +1,115 @@
+// The editor at the window sizes artists use (4K at twice the interface size, as its
+// monitor scale would give), under Xvfb: every reported control (the
+// viewport's and the render panel's toolbars) lies inside its panel's visible area and
+// inside the window, so nothing is cut off or unreachable. Screenshots are kept in the
+// test's temporary folder for looking at.
+#include "core/image/image_io.h"
+
+#include "tests/support/editor_run.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace inkray {
+namespace {
+
+using testing::editor_command;
+using testing::editor_unavailable;
+using testing::run_command;
+
+struct Rect {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+struct Widget {
+  Rect item, visible;
+};
+
+std::map<std::string, Widget> read_report(const std::filesystem::path& file, Rect* window) {
+  std::map<std::string, Widget> widgets;
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string name;
+    words >> name;
+    if (name == "window") {
+      words >> window->x0 >> window->y0 >> window->x1 >> window->y1;
+      continue;
+    }
+    Widget w;
+    words >> w.item.x0 >> w.item.y0 >> w.item.x1 >> w.item.y1 >> w.visible.x0 >> w.visible.y0 >> w.visible.x1 >>
+        w.visible.y1;
+    if (words) widgets[name] = w;
+  }
+  return widgets;
+}
+
+bool inside(const Rect& a, const Rect& b) {
+  constexpr float kSlack = 1.f;  // ImGui rounds item rectangles to pixels
+  return a.x0 >= b.x0 - kSlack && a.y0 >= b.y0 - kSlack && a.x1 <= b.x1 + kSlack && a.y1 <= b.y1 + kSlack;
+}
+
+struct WindowCase {
+  int width, height;
+  float ui_scale;  // 4K screens run at twice the interface size
+};
+
+class EditorLayout : public ::testing::TestWithParam<WindowCase> {};
+
+TEST_P(EditorLayout, EveryToolbarControlIsInsideItsPanel) {
+  if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
+  int code = 0;
+  const auto [width, height, ui_scale] = GetParam();
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  const auto dir = std::filesystem::temp_directory_path() / ("inkray_editor_layout_" + size);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string scene = std::string(INKRAY_SOURCE_DIR) + "/scenes/toon.json";
+  const auto shot = dir / "editor.png", report = dir / "widgets.txt";
+  // A fresh config folder: the default panel sizes and interface size.
+  const std::string out = run_command(editor_command(dir, width, height) + " --ui-scale " + std::to_string(ui_scale) +
+                                          " --select two_band_ball --screenshot " +
+                                          shot.string() + " --widget-report " + report.string() + " --frames 10 " +
+                                          scene,
+                                      &code);
+  ASSERT_EQ(code, 0) << out;
+
+  RgbImage image;
+  std::string error;
+  ASSERT_TRUE(read_image(shot, true, &image, &error)) << error;
+  EXPECT_EQ(image.width, width);
+  EXPECT_EQ(image.height, height);
+
+  Rect window;
+  const auto widgets = read_report(report, &window);
+  EXPECT_EQ(window.x1, float(width));
+  EXPECT_EQ(window.y1, float(height));
+  int viewport_controls = 0, render_controls = 0;
+  for (const auto& [name, w] : widgets) {
+    EXPECT_TRUE(inside(w.item, w.visible)) << name << " is clipped by its panel at " << size;
+    EXPECT_TRUE(inside(w.item, window)) << name << " is outside the window at " << size;
+    viewport_controls += name.rfind("viewport.", 0) == 0;
+    render_controls += name.rfind("render.", 0) == 0;
+  }
+  // The toolbars report themselves; a renamed or lost report would make this test vacuous.
+  EXPECT_GE(viewport_controls, 6) << "the viewport toolbar reported too few controls";
+  EXPECT_GE(render_controls, 1) << "the render panel reported no controls";
+}
+
+std::string size_name(const ::testing::TestParamInfo<WindowCase>& c) {
+  return std::to_string(c.param.width) + "x" + std::to_string(c.param.height);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, EditorLayout,
+                         ::testing::Values(WindowCase{1280, 720, 1.f}, WindowCase{1920, 1080, 1.f},
+                                           WindowCase{2560, 1440, 1.f}, WindowCase{3840, 2160, 2.f}),
+                         size_name);
+
+}  // namespace
+}  // namespace inkray
