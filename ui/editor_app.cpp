@@ -423,10 +423,10 @@ void EditorApp::dialogs() {
     ImGui::OpenPopup("Could not open the scene");
     show_load_errors_ = false;
   }
-  ImGui::SetNextWindowSize(ImVec2(640, 0), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(42 * ImGui::GetFontSize(), 0), ImGuiCond_Appearing);
   if (ImGui::BeginPopupModal("Could not open the scene", nullptr)) {
     ImGui::TextWrapped("The current document is unchanged. Problems found:");
-    ImGui::BeginChild("errors", ImVec2(0, 200), true);
+    ImGui::BeginChild("errors", ImVec2(0, 13 * ImGui::GetFontSize()), true);
     for (const auto& e : load_errors_) ImGui::TextWrapped("%s", e.c_str());
     ImGui::EndChild();
     if (ImGui::Button("OK")) ImGui::CloseCurrentPopup();

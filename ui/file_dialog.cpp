@@ -4,6 +4,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cctype>
 
 namespace inkray {
 
@@ -22,7 +23,9 @@ void FileDialog::open(std::string title, Mode mode, std::vector<std::string> ext
 
 bool FileDialog::matches(const std::filesystem::path& file) const {
   if (extensions_.empty()) return true;
-  const std::string ext = file.extension().string();
+  // Cameras and other systems write TILES.PNG as readily as tiles.png.
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return std::find(extensions_.begin(), extensions_.end(), ext) != extensions_.end();
 }
 
@@ -33,7 +36,8 @@ bool FileDialog::draw(std::filesystem::path* chosen) {
     popup_requested_ = false;
   }
   bool confirmed = false;
-  ImGui::SetNextWindowSize(ImVec2(620, 440), ImGuiCond_Appearing);
+  const float em = ImGui::GetFontSize();
+  ImGui::SetNextWindowSize(ImVec2(42 * em, 30 * em), ImGuiCond_Appearing);
   if (!ImGui::BeginPopupModal(title_.c_str(), nullptr)) {
     open_ = false;
     return false;
@@ -83,12 +87,12 @@ bool FileDialog::draw(std::filesystem::path* chosen) {
   ImGui::EndChild();
   if (!enter.empty()) directory_ = enter;
 
-  ImGui::SetNextItemWidth(-160.f);
+  ImGui::SetNextItemWidth(-11.f * em);
   if (ImGui::InputText("##name", &name_, ImGuiInputTextFlags_EnterReturnsTrue)) confirmed = true;
   ImGui::SameLine();
-  if (ImGui::Button(mode_ == Mode::open ? "Open" : "Save", ImVec2(70, 0))) confirmed = true;
+  if (ImGui::Button(mode_ == Mode::open ? "Open" : "Save", ImVec2(5 * em, 0))) confirmed = true;
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(70, 0))) {
+  if (ImGui::Button("Cancel", ImVec2(5 * em, 0))) {
     open_ = false;
     ImGui::CloseCurrentPopup();
   }

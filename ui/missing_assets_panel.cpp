@@ -70,7 +70,7 @@ void MissingAssetsPanel::draw(EditorState& state) {
     refresh(state);
   }
   if (missing_.empty() || !open_) return;
-  ImGui::SetNextWindowSize(ImVec2(560.f, 0.f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(37.f * ImGui::GetFontSize(), 0.f), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Missing files", &open_)) {
     ImGui::End();
     return;

@@ -26,7 +26,7 @@ NodeCategory category_of(std::string_view type_name) { return node_category(*mak
 
 std::string node_add_menu(std::string* filter, bool graph_has_output) {
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  ImGui::SetNextItemWidth(200.f);
+  ImGui::SetNextItemWidth(13.f * ImGui::GetFontSize());
   ImGui::InputTextWithHint("##search", "search node types", filter);
   const bool enter = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false);
   const auto allowed = [&](std::string_view name) {

@@ -1,6 +1,6 @@
 // The viewport: the renderer's newest snapshot as a GL texture (uploaded only
-// when a new one is published), the statistics overlay with an error-against-
-// time plot, display controls, and mouse input for camera navigation, picking,
+// when a new one is published) under its overlays (ui/viewport_overlay.h),
+// display controls, and mouse input for camera navigation, picking,
 // click-to-focus, drawing a render region, and moving the selected object with
 // the gizmo or Blender's G/R/S keys.
 #pragma once
@@ -42,8 +42,6 @@ class ViewportPanel {
  private:
   void upload(const ViewportSnapshot& snapshot);
   void toolbar(EditorState& state);
-  void overlay(const ViewportSnapshot& snapshot, float x, float y);
-  void problems_overlay(const std::vector<std::string>& problems, float x, float y, float w);
   void handle_input(EditorState& state, const ProgressiveRenderer& renderer, float x, float y, float w,
                     float h);
   // Each returns true when it took this frame's mouse input.

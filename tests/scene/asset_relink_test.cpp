@@ -3,7 +3,6 @@
 // other missing file of its folder that is found beside the chosen one, and nothing else.
 #include "core/document/asset_relink.h"
 #include "core/document/json_io.h"
-#include "ui/document.h"
 
 #include "tests/support/file_helpers.h"
 #include "tests/support/scene_copies.h"
@@ -149,19 +148,6 @@ TEST(AssetRelink, SavingKeepsMissingPathsAsWritten) {
   const std::string text = testing::read_file(folder / "saved.json");
   EXPECT_NE(text.find("\"meshes/torus_knot.obj\""), std::string::npos);
   EXPECT_NE(text.find("\"textures/tiles.png\""), std::string::npos);
-}
-
-TEST(AssetRelink, TheEditorOpensASceneWithMissingFilesAndListsThemApart) {
-  testing::ScratchFolder folder;
-  fs::copy_file(kScenes / "mesh.json", folder / "mesh.json");
-  Document document;
-  std::vector<std::string> errors, warnings, missing;
-  ASSERT_TRUE(document.open(folder / "mesh.json", &errors, &warnings, &missing));
-  EXPECT_TRUE(warnings.empty()) << warnings.front();
-  ASSERT_EQ(missing.size(), 3u);
-  EXPECT_NE(missing[1].find("meshes/torus_knot.obj"), std::string::npos);
-  EXPECT_NE(missing[1].find("object \"knot\""), std::string::npos);
-  EXPECT_EQ(mesh_path(document.scene(), 1), "meshes/torus_knot.obj");
 }
 
 }  // namespace
