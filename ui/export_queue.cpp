@@ -102,8 +102,11 @@ std::vector<uint64_t> ExportQueue::poll() {
   std::vector<uint64_t> finished;
   for (ExportEntry& e : entries_) {
     if (e.state != ExportState::running) continue;
+    // done() first: a job seen done has published its final figures, which a progress
+    // read before it could miss if the job finished in between.
+    const bool done = e.job->done();
     e.progress = e.job->progress();
-    if (!e.job->done()) return finished;  // one at a time: the rest waits
+    if (!done) return finished;  // one at a time: the rest waits
     e.error = e.job->error();
     e.written = e.job->written();
     e.state = e.error.empty()          ? ExportState::done
