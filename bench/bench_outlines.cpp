@@ -1,7 +1,8 @@
 // inkray-bench-outlines: what outlines cost. Renders one scene with lines off
 // (the outlines block removed), with every line type switched off but the
-// block present (which must cost nothing), and at several stencil qualities,
-// and prints seconds per sample per pixel and the overhead against lines off.
+// block present (which must cost nothing), with the scene's lines with and
+// without adaptive line sampling, and at several stencil qualities, and prints
+// seconds per sample per pixel, rays per path and the overhead against lines off.
 #include "core/render/batch_render.h"
 #include "core/compiler/compile.h"
 #include "core/document/json_io.h"
@@ -43,13 +44,15 @@ int main(int argc, char** argv) {
   using namespace inkray;
   std::string scene_file = "scenes/cornell_outlines.json";
   int spp = 8, runs = 3, threads = 0;
+  bool all_qualities = true;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--spp" && i + 1 < argc) spp = std::atoi(argv[++i]);
     else if (a == "--runs" && i + 1 < argc) runs = std::atoi(argv[++i]);
     else if (a == "--threads" && i + 1 < argc) threads = std::atoi(argv[++i]);
+    else if (a == "--default-only") all_qualities = false;
     else if (a == "-h" || a == "--help") {
-      std::printf("usage: inkray-bench-outlines [SCENE.json] [--spp N] [--runs N] [--threads N]\n");
+      std::printf("usage: inkray-bench-outlines [SCENE.json] [--spp N] [--runs N] [--threads N] [--default-only]\n");
       return 0;
     } else scene_file = a;
   }
@@ -80,13 +83,23 @@ int main(int argc, char** argv) {
     style->enabled = false;
   row("block present, no type on", seconds_per_spp(none, spp, runs, threads, &rays));
 
-  for (int q : {1, 2, 4, 8}) {
+  for (const bool adaptive : {true, false}) {
     SceneDesc on = base;
     on.outlines.enabled = true;
-    on.outlines.quality = q;
+    on.outlines.adaptive = adaptive;
     const double t = seconds_per_spp(on, spp, runs, threads, &rays);
-    const std::string name = "scene's lines, quality " + std::to_string(q) + (q == OutlineDesc{}.quality ? " (default)" : "");
+    const std::string name = "scene's lines, quality " + std::to_string(on.outlines.quality) +
+                             (adaptive ? ", adaptive" : ", every ray");
     row(name.c_str(), t);
+  }
+  if (all_qualities) {
+    for (int q : {2, 4, 8}) {
+      SceneDesc on = base;
+      on.outlines.enabled = true;
+      on.outlines.quality = q;
+      const std::string name = "scene's lines, quality " + std::to_string(q) + ", adaptive";
+      row(name.c_str(), seconds_per_spp(on, spp, runs, threads, &rays));
+    }
   }
   return 0;
 }

@@ -1,6 +1,6 @@
 // The compile pipeline (docs/architecture.md, "Stages"): checks, materials,
-// placed objects, strokes, the top-level BVH, lights. Each step reuses what the
-// last compile built when the document's changes leave it valid.
+// placed objects, strokes, crease patches, the top-level BVH, lights. Each step
+// reuses what the last compile built when the document's changes leave it valid.
 #include "core/compiler/compile.h"
 
 #include "core/compiler/compile_lights.h"
@@ -44,6 +44,22 @@ void set_view(const SceneDesc& desc, RenderScene& scene) {
   scene.settings = desc.render;
   scene.outlines = desc.outlines;
   scene.camera = Camera(desc.camera, desc.render.width, desc.render.height);
+}
+
+// Crease lines compare smooth patches (docs/architecture.md, "Mesh normals and
+// feature edges"): each document object's at the crease threshold, found only while
+// crease lines are drawn. Strokes (the objects after `placed`) and spheres have none.
+bool wants_crease_patches(const OutlineDesc& o) { return o.enabled && o.crease.enabled; }
+bool same_crease_patches(const OutlineDesc& a, const OutlineDesc& b) {
+  return wants_crease_patches(a) == wants_crease_patches(b) &&
+         (!wants_crease_patches(a) || a.crease.threshold == b.crease.threshold);
+}
+void set_crease_patches(const OutlineDesc& outlines, const std::vector<std::shared_ptr<const PlacedShape>>& placed,
+                        RenderScene& scene, AssetCache& assets) {
+  const bool wanted = wants_crease_patches(outlines);
+  for (size_t i = 0; i < scene.objects.size(); ++i)
+    scene.objects[i].crease_patches =
+        wanted && i < placed.size() ? crease_patches(*placed[i], outlines.crease.threshold, assets) : nullptr;
 }
 
 Stage stage_of(AssetKind kind) {
@@ -157,9 +173,12 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   };
   if (last_ && result.changes.within(
                    {Stage::layout, Stage::limits, Stage::resolve, Stage::camera, Stage::sampling, Stage::film})) {
-    // Nothing of the world changed: a new view of the same one.
+    // Nothing of the world changed: a new view of the same one, with the crease
+    // patches of a new threshold.
     auto scene = std::make_shared<RenderScene>(*last_);
     set_view(desc, *scene);
+    if (!same_crease_patches(last_->outlines, desc.outlines))
+      set_crease_patches(desc.outlines, placed_, *scene, assets_);
     remember(std::move(scene), last_document_materials_);
     return result;
   }
@@ -190,6 +209,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
 
   ObjectBuild objects{assets_, counters_, desc.base_dir, options.stand_in_for_missing_assets};
   std::vector<std::string> object_keys;
+  std::vector<std::shared_ptr<const PlacedShape>> placed_objects;
   for (size_t i = 0; i < desc.objects.size(); ++i) {
     if ((i & 255) == 0 && cancelled()) return result;
     const ObjectDesc& obj = desc.objects[i];
@@ -216,6 +236,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
                               combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines),
                               Transform{to_world.inv, to_world.m}});
     object_keys.push_back(std::move(key));
+    placed_objects.push_back(placed);
   }
   if (!result.errors.empty()) return result;
   // Strokes grow on the compiled objects and join the same BVH.
@@ -223,6 +244,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   StrokeBuild strokes{assets_, counters_, options.cancel};
   compile_strokes(desc, *scene, object_keys, strokes, result.errors);
   if (cancelled() || !result.errors.empty()) return result;
+  set_crease_patches(desc.outlines, placed_objects, *scene, assets_);
   // Objects that moved, appeared or changed shape need a new top level; else the
   // last one serves (a material edit).
   if (last_ && scene->geometry.same_instances(last_->geometry)) {
@@ -241,6 +263,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
 
   assets_.finish_compile();
   material_keys_ = std::move(material_keys);
+  placed_ = std::move(placed_objects);
   remember(std::move(scene), document_materials);
   return result;
 }

@@ -21,6 +21,8 @@
 
 namespace inkray {
 
+struct PlacedShape;
+
 struct CompileOptions {
   Cancel cancel;                  // checked between objects and inside stroke building
   std::uint64_t memory_limit = 0;  // bytes the estimate may reach; 0: half the machine's memory
@@ -74,6 +76,9 @@ class SceneCompiler {
   size_t last_document_materials_ = 0;  // last_->materials before the stroke materials
   std::vector<std::vector<std::string>> material_keys_;  // per material: the cache entries it was built from
   std::map<std::string, std::string> file_stamps_;  // asset file -> stamp, at the last compile
+  // The placed shapes of last_'s document objects (its first objects), whose crease
+  // patches a new crease threshold recomputes without recompiling the world.
+  std::vector<std::shared_ptr<const PlacedShape>> placed_;
   std::vector<std::string> asset_warnings_;  // the missing and unreadable files last reported
 };
 

@@ -76,6 +76,8 @@ std::optional<Material> compile_toon(const ToonDesc& d, ImageCache& images, std:
   m.rim_color = d.rim_color;
   m.rim_width = d.rim_width;
   m.rim_threshold = d.rim_threshold;
+  m.environment = d.environment;
+  m.environment_shadows = d.environment_shadows;
   m.receive_indirect = d.receive_indirect;
   m.bounce_indirect = d.bounce_indirect;
   return m;

@@ -2,6 +2,8 @@
 
 #include "core/compiler/compile.h"
 #include "core/document/param_key.h"
+#include "core/geometry/mesh_features.h"
+#include "core/geometry/mesh_normals.h"
 
 #include <cmath>
 #include <cstdio>
@@ -48,6 +50,11 @@ std::shared_ptr<const Shape> object_space_mesh(const ShapeVariant& shape, Object
         } else if constexpr (std::is_same_v<T, MeshDesc>) {
           const auto data = build.assets.mesh(build.base_dir / s.path, error);
           if (!data) return nullptr;
+          if (needs_auto_smooth(*data, s.smooth_angle)) {
+            TriangleMeshData smooth = auto_smooth(*data, s.smooth_angle);
+            return std::make_shared<const Shape>(make_mesh(std::move(smooth.positions), std::move(smooth.normals),
+                                                           std::move(smooth.uvs), std::move(smooth.indices), identity));
+          }
           return std::make_shared<const Shape>(make_mesh(data->positions, data->normals, data->uvs, data->indices, identity));
         } else {
           static_assert(std::is_same_v<T, SphereDesc>, "a new shape type needs a case here");
@@ -57,12 +64,28 @@ std::shared_ptr<const Shape> object_space_mesh(const ShapeVariant& shape, Object
       shape);
 }
 
-// Places an object-space shape's BVH by the object's transform; `from` is the BVH's key.
+// Whether a transform keeps the angles between faces: rotation, uniform scale,
+// reflection and translation do; a non-uniform scale or a shear bends them.
+bool keeps_angles(const Transform& t) {
+  const Mat3 linear(t.m);
+  const Mat3 gram = glm::transpose(linear) * linear;
+  const float scale = (gram[0][0] + gram[1][1] + gram[2][2]) / 3.f;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (std::abs(gram[i][j] - (i == j ? scale : 0.f)) > 1e-5f * scale) return false;
+  return scale > 0.f;
+}
+
+// Places an object-space shape's BVH by the object's transform; `from` is the BVH's
+// key, `features_key` names the object-space shape's feature edges.
 std::shared_ptr<const PlacedShape> place_mesh(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
-                                              const std::string& key, const std::string& from, ObjectBuild& build) {
+                                              const std::string& key, const std::string& from,
+                                              const std::string& features_key, ObjectBuild& build) {
   auto placed = std::make_shared<PlacedShape>();
   placed->bvh = std::move(bvh);
   placed->to_world = to_world;
+  placed->features_in_world = !keeps_angles(to_world);
+  placed->features_key = placed->features_in_world ? "features|" + key : features_key;
   if (to_world.is_identity()) {
     placed->world = placed->bvh->shared_shape();
   } else {
@@ -87,7 +110,8 @@ std::shared_ptr<const PlacedShape> place_stand_in(const ObjectDesc& object, Obje
                                          std::make_shared<const Shape>(make_box(-half, half, Transform{}))));
     ++build.counters.shape_bvhs;
   }
-  return place_mesh(std::move(bvh), transform_from_desc(object.transform), *key, bvh_key, build);
+  return place_mesh(std::move(bvh), transform_from_desc(object.transform), *key, bvh_key, "features|" + bvh_key,
+                    build);
 }
 
 }  // namespace
@@ -100,13 +124,18 @@ Transform transform_from_desc(const TransformDesc& desc) {
 
 std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build, std::string* key,
                                                 std::string* error) {
-  // A mesh is known by its file's stamp, so a file changed on disk is read again.
-  std::string shape_key;
+  // A mesh is known by its file's stamp, so a file changed on disk is read again,
+  // and by its smooth angle. `source_key` is what the shape was made from: the file
+  // as read (the cache's key for it), kept while the BVH is so that another smooth
+  // angle reads no file. Feature edges depend on positions only: not on the angle.
+  std::string shape_key, source_key;
   if (const auto* mesh = std::get_if<MeshDesc>(&object.shape)) {
     const auto stamp = file_stamp(build.base_dir / mesh->path);
-    shape_key = "mesh|" + (stamp ? *stamp : (build.base_dir / mesh->path).string());
+    source_key = "mesh|" + (stamp ? *stamp : (build.base_dir / mesh->path).string());
+    shape_key = source_key + "|smooth ";
+    append_key(shape_key, mesh->smooth_angle);
   } else {
-    shape_key = "shape|" + param_key(object.shape);
+    shape_key = source_key = "shape|" + param_key(object.shape);
   }
   *key = "placed|" + shape_key + "|" + param_key(object.transform);
   if (auto found = build.assets.find<PlacedShape>(*key)) return found;
@@ -128,10 +157,30 @@ std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, Object
   if (!bvh) {
     auto shape = object_space_mesh(object.shape, build, error);
     if (!shape) return build.stand_ins ? place_stand_in(object, build, key) : nullptr;
-    bvh = build.assets.keep(bvh_key, std::make_shared<const ShapeBvh>(std::move(shape)));
+    std::vector<std::string> from;
+    if (source_key != shape_key) from.push_back(source_key);
+    bvh = build.assets.keep(bvh_key, std::make_shared<const ShapeBvh>(std::move(shape)), std::move(from));
     ++build.counters.shape_bvhs;
   }
-  return place_mesh(std::move(bvh), to_world, *key, bvh_key, build);
+  return place_mesh(std::move(bvh), to_world, *key, bvh_key, "features|" + source_key, build);
+}
+
+std::shared_ptr<const std::vector<uint32_t>> crease_patches(const PlacedShape& placed, float threshold_degrees,
+                                                            AssetCache& assets) {
+  if (placed.features_key.empty()) return nullptr;
+  const auto* mesh = std::get_if<TriangleMesh>(placed.features_in_world ? placed.world.get() : &placed.bvh->shape());
+  if (!mesh) return nullptr;
+  std::string key = "crease patches|" + placed.features_key + "|";
+  append_key(key, threshold_degrees);
+  if (auto found = assets.find<std::vector<uint32_t>>(key)) return found;
+  auto features = assets.find<MeshFeatures>(placed.features_key);
+  if (!features) {
+    features = assets.keep(placed.features_key,
+                           std::make_shared<const MeshFeatures>(find_feature_edges(
+                               std::span(mesh->positions.data(), mesh->vertex_count()), mesh->indices)));
+  }
+  return assets.keep(key, std::make_shared<const std::vector<uint32_t>>(smooth_patches(*features, threshold_degrees)),
+                     {placed.features_key});
 }
 
 }  // namespace inkray

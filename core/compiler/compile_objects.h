@@ -18,6 +18,10 @@ struct PlacedShape {
   Transform to_world;  // the instance's: identity for a sphere, whose BVH holds its transform
   std::shared_ptr<const Shape> world;
   std::string problem;  // why it cannot be placed (reaching too far), else empty
+  // The cache key of the shape's feature edges (mesh_features.h): the shape's, and
+  // the transform's too when it bends angles (features_in_world). Empty for a sphere.
+  std::string features_key;
+  bool features_in_world = false;  // found on `world`, else on the BVH's object-space mesh
 };
 
 struct ObjectBuild {
@@ -28,12 +32,21 @@ struct ObjectBuild {
 };
 
 // The object's shape placed by its transform, from the cache when nothing that
-// shapes it changed. *key names what shaped it (the shape, the mesh file's stamp,
-// the transform). Null with *error set when its mesh cannot be read; with
+// shapes it changed. *key names what shaped it (the shape, the mesh file's stamp and
+// smooth angle, the transform). A mesh file without normals is auto-smoothed
+// (mesh_normals.h); the file as read stays cached while its BVH does, so a new
+// smooth angle reads no file. Null with *error set when its mesh cannot be read; with
 // build.stand_ins, a unit box centred on the object's origin instead (*error set
 // all the same), so the user sees where the mesh belongs.
 std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build, std::string* key,
                                                 std::string* error);
+
+// The smooth patch of each triangle of a placed mesh, quad or box at a crease
+// threshold in degrees (smooth_patches, mesh_features.h); null for a sphere. The
+// feature edges are found once per shape and the patches once per threshold, both
+// kept in the cache.
+std::shared_ptr<const std::vector<uint32_t>> crease_patches(const PlacedShape& placed, float threshold_degrees,
+                                                            AssetCache& assets);
 
 // Scale, then the rotations in order, then translation.
 Transform transform_from_desc(const TransformDesc& desc);

@@ -90,10 +90,18 @@ template <class V> void visit_params(BoxDesc& d, V& v) {
 struct MeshDesc {
   static constexpr std::string_view type_name = "mesh";
   std::string path;  // Wavefront OBJ, relative to the scene file
+  float smooth_angle = 30.f;  // degrees; normals for a file without them (geometry/mesh_normals.h)
   bool operator==(const MeshDesc&) const = default;
 };
 template <class V> void visit_params(MeshDesc& d, V& v) {
   v(required(path("path", "Wavefront OBJ file, relative to the scene file")).files(FileType::mesh).labelled("OBJ file"), d.path);
+  v(number("smooth_angle", 0, 180,
+           "For a file without normals: shading is smooth across edges whose faces meet at most this many "
+           "degrees apart and sharp at the others. 0 keeps the facets, 180 smooths everything; normals in "
+           "the file are used as given")
+        .slider(0, 180)
+        .labelled("Auto smooth angle"),
+    d.smooth_angle);
 }
 
 using ShapeVariant = std::variant<SphereDesc, QuadDesc, BoxDesc, MeshDesc>;

@@ -148,6 +148,8 @@ struct ToonDesc {
   Color rim_color{1.f};
   float rim_width = 0.3f;               // facing-ratio band width
   float rim_threshold = 0.5f;
+  float environment = 0.25f;            // the sky counts as a light of this fraction of its strength
+  bool environment_shadows = false;     // the sky is shadowed (one more shadow ray per sample)
   bool receive_indirect = false;        // add indirect light (bands stay on direct light)
   bool bounce_indirect = true;          // other surfaces see it as diffuse
   bool operator==(const ToonDesc&) const = default;
@@ -171,6 +173,14 @@ template <class V> void visit_params(ToonDesc& d, V& v) {
   v(color("rim_color", 1e3, "Colour of the rim light"), d.rim_color);
   v(number("rim_width", 0, 1, "Width of the rim in facing ratio"), d.rim_width);
   v(number("rim_threshold", 0, 1, "Rim appears where 1 - facing ratio exceeds this"), d.rim_threshold);
+  v(number("environment", 0, 16,
+           "How much the environment adds to the light level: it counts as a light of this fraction of its "
+           "strength (0: none, 1: as bright as it is)")
+        .slider(0, 1)
+        .labelled("Environment light"),
+    d.environment);
+  v(toggle("environment_shadows", "Shadow the environment light: one more shadow ray per sample"),
+    d.environment_shadows);
   v(toggle("receive_indirect", "Add indirect light from the path tracer"), d.receive_indirect);
   v(toggle("bounce_indirect", "Other surfaces receive light bounced off this one"), d.bounce_indirect);
 }

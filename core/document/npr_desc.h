@@ -34,6 +34,7 @@ template <class V> void visit_params(LineStyleDesc& d, V& v) {
 
 struct OutlineDesc {
   int quality = 1;  // stencil rays per camera sample
+  bool adaptive = true;  // trace stencil rays only where lines are still uncertain
   float width = 2.f;
   LineWidthUnit unit = LineWidthUnit::pixels;
   float reference_height = 1080.f;  // `pixels` are pixels of an image this tall
@@ -57,7 +58,8 @@ struct OutlineDesc {
 template <class V> void visit_params(OutlineDesc& d, V& v) {
   v(at(Stage::sampling, toggle("enabled", "Draw outlines")), d.enabled);
   v(at(Stage::sampling, integer("quality", 1, 16, "Stencil rays per camera sample: more give clean lines in fewer samples").labelled("Line quality")), d.quality);
-  v(at(Stage::sampling, number("width", 0, 1000, "Line width in `unit`").log_slider(0.1, 20).labelled("Line width")), d.width);
+  v(at(Stage::sampling, toggle("adaptive", "Trace stencil rays only where a pixel's lines are still uncertain; the converged lines are the same").labelled("Adaptive line sampling")), d.adaptive);
+  v(at(Stage::sampling, number("width", 0, 1000, "Line width in `unit`; below one pixel a line fades instead of thinning, 0 draws none").log_slider(0.1, 20).labelled("Line width")), d.width);
   v(at(Stage::sampling, choice("unit", kLineWidthUnitNames,
                                "pixels (at reference_height), percent of image height, or world units")),
     d.unit);
@@ -70,8 +72,8 @@ template <class V> void visit_params(OutlineDesc& d, V& v) {
   v(group("silhouette", "Where a surface meets the background or a surface behind it"), d.silhouette);
   v(group("object", "Where one object meets another"), d.object);
   v(group("material", "Where materials change"), d.material);
-  v(group("crease", "Where the normal bends by more than `threshold` degrees"), d.crease);
-  v(group("depth", "Where the distance jumps by more than `threshold` (relative)"), d.depth);
+  v(group("crease", "Where the normal bends by more than `threshold` degrees; on meshes, along feature edges sharper than that"), d.crease);
+  v(group("depth", "Where one surface occludes another more than `threshold` (relative) further away"), d.depth);
   v(group("intersection", "Where two objects cross"), d.intersection);
 }
 

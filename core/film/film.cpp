@@ -107,15 +107,17 @@ void Film::add_lines(int x, int y, const LineSample& lines) {
   sum.weight += lines.weight;
   sum.override_weight += lines.override_weight;
   sum.override_color += lines.override_color;
+  sum.rays += lines.rays;
+  sum.hit_rays += lines.hit_rays;
   ++line_count_[i];
 }
 
 LineSample Film::line_mean(int x, int y) const {
   if (line_sum_.empty()) return {};
   const size_t i = index(x, y);
-  if (!line_count_[i]) return {};
+  if (!(line_sum_[i].rays > 0.f)) return {};
   LineSample mean = line_sum_[i];
-  const float inv = 1.f / float(line_count_[i]);
+  const float inv = 1.f / line_sum_[i].rays;
   for (float& c : mean.coverage) c *= inv;
   mean.weight *= inv;
   mean.override_weight *= inv;

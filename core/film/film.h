@@ -68,8 +68,11 @@ class Film {
   // AOV image: averages for albedo/normal/depth, ids as floats (-1 where nothing
   // was hit), line opacities in [0, 1] for the outline AOVs.
   RgbImage resolve_aov(Aov aov) const;
-  // Mean outline contribution of a pixel's samples (zero without lines).
+  // Mean outline contribution of a pixel's stencil rays (zero without lines).
   LineSample line_mean(int x, int y) const;
+  // The sums behind it, and the samples that added to them (adaptive line sampling).
+  const LineSample& line_sum(int x, int y) const { return line_sum_[index(x, y)]; }
+  uint32_t line_samples(int x, int y) const { return line_count_[index(x, y)]; }
   // Estimated relative RMS error of the mean image from the half-buffer
   // difference: sqrt(mean((a-b)^2)/4) / mean(luminance), over luminance.
   double estimated_relative_error() const;
@@ -90,7 +93,7 @@ class Film {
   std::vector<uint32_t> hit_count_;
   std::vector<int> object_id_, material_id_;
   std::vector<LineSample> line_sum_;
-  std::vector<uint32_t> line_count_;
+  std::vector<uint32_t> line_count_;  // samples that added to line_sum_
   std::atomic<uint64_t> nonfinite_{0};
 };
 

@@ -22,34 +22,61 @@ RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadB
                                                          : anisotropic_kuwahara_filter(image, params, pool, cancel);
 }
 
-// Line colours go over the filtered image, so the filter never smears them.
-void composite_lines(const Film& film, const OutlineDesc& outlines, RgbImage& image) {
+}  // namespace
+
+RgbImage resolve_base(const Film& film, const RenderSettings& settings, ThreadBudget* pool, const Cancel& cancel) {
+  return apply_painterly(film.resolve(), settings, pool, cancel, film.height());
+}
+
+bool same_base(const RenderSettings& a, const RenderSettings& b) {
+  if (a.painterly != b.painterly) return false;
+  return a.painterly == PainterlyFilter::none ||
+         (a.painterly_radius == b.painterly_radius && a.painterly_sharpness == b.painterly_sharpness);
+}
+
+FilmLines gather_lines(const Film& film) {
+  FilmLines lines{film.width(), film.height(), {}, {}};
+  if (!film.has_lines()) return lines;
   for (int y = 0; y < film.height(); ++y) {
     for (int x = 0; x < film.width(); ++x) {
       const LineSample m = film.line_mean(x, y);
-      if (m.weight <= 0.f) continue;
-      // Objects that override the line colour own that share of the pixel's lines.
-      const float override_share = std::clamp(m.override_weight / m.weight, 0.f, 1.f);
-      const Color override_color = m.override_weight > 0.f ? m.override_color / m.override_weight : Color(0.f);
-      Color& c = image.at(x, y);
-      for (int t = 0; t < kLineTypeCount; ++t) {
-        const LineStyleDesc& style = line_style(outlines, LineType(t));
-        const float alpha = style.opacity * line_opacity(m.coverage[size_t(t)]);
-        if (alpha <= 0.f) continue;
-        const Color line = glm::mix(style.color, override_color, override_share);
-        c = glm::mix(c, line, alpha);
-      }
+      if (!(m.weight > 0.f)) continue;
+      lines.pixels.push_back(uint32_t(y) * uint32_t(film.width()) + uint32_t(x));
+      lines.means.push_back(m);
     }
+  }
+  return lines;
+}
+
+// Line colours go over the filtered image, so the filter never smears them.
+void composite_lines(const FilmLines& lines, const OutlineDesc& outlines, const DisplayEncoding& display,
+                     RgbImage& image) {
+  if (image.width != lines.width || image.height != lines.height) return;
+  const DisplayMapping mapping(display);
+  for (size_t i = 0; i < lines.pixels.size(); ++i) {
+    const LineSample& m = lines.means[i];
+    // Objects that override the line colour own that share of the pixel's lines.
+    const float override_share = std::clamp(m.override_weight / m.weight, 0.f, 1.f);
+    const Color override_color = m.override_weight > 0.f ? m.override_color / m.override_weight : Color(0.f);
+    Color& c = image.pixels[lines.pixels[i]];
+    Color shown(0.f);
+    bool drawn = false;
+    for (int t = 0; t < kLineTypeCount; ++t) {
+      const LineStyleDesc& style = line_style(outlines, LineType(t));
+      const float alpha = style.opacity * line_opacity(m.coverage[size_t(t)]);
+      if (alpha <= 0.f) continue;
+      if (!drawn) shown = mapping.to_display(c), drawn = true;
+      const Color line = glm::mix(style.color, override_color, override_share);
+      shown = glm::mix(shown, line, alpha);
+    }
+    if (drawn) c = mapping.from_display(shown);
   }
 }
 
-}  // namespace
-
 RgbImage resolve_final(const Film& film, const RenderSettings& settings, const OutlineDesc& outlines,
-                       ThreadBudget* pool, const Cancel& cancel) {
-  RgbImage image = apply_painterly(film.resolve(), settings, pool, cancel, film.height());
-  if (image.pixels.empty()) return image;  // the filter was cut short
-  if (film.has_lines()) composite_lines(film, outlines, image);
+                       const DisplayEncoding& display, ThreadBudget* pool, const Cancel& cancel) {
+  RgbImage image = resolve_base(film, settings, pool, cancel);
+  if (!image.pixels.empty()) composite_lines(gather_lines(film), outlines, display, image);  // else cut short
   return image;
 }
 

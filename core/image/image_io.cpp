@@ -3,6 +3,7 @@
 #include "core/image/image_io.h"
 
 #include "core/image/image_header.h"
+#include "core/image/view_transform.h"
 #include "core/io/atomic_file.h"
 
 #include <stb_image.h>
@@ -107,11 +108,11 @@ float linear_to_srgb(float c) {
 }
 
 std::vector<uint8_t> encode_srgb8(const RgbImage& image, float exposure_stops) {
-  const float scale = std::exp2(exposure_stops);
+  const DisplayMapping display(DisplayEncoding{exposure_stops, ViewTransform::standard});
   std::vector<uint8_t> out(image.pixels.size() * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c)
-      out[3 * i + c] = uint8_t(std::lround(255.f * linear_to_srgb(scale * image.pixels[i][c])));
+      out[3 * i + c] = uint8_t(std::lround(255.f * linear_to_srgb(display.to_display(image.pixels[i][c]))));
   return out;
 }
 

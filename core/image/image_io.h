@@ -17,7 +17,7 @@ ImageFormat image_format_of(const std::filesystem::path& file);
 
 float linear_to_srgb(float linear);
 float srgb_to_linear(float encoded);
-// 8-bit sRGB, clamped, with exposure in stops applied first.
+// 8-bit sRGB of the standard view (view_transform.h) at an exposure in stops.
 std::vector<uint8_t> encode_srgb8(const RgbImage& image, float exposure_stops = 0.f);
 
 // The bytes of the file write_image would write, for callers that stage several outputs

@@ -21,11 +21,28 @@
 // in proportion to the light's visible part, which is an anti-aliased band edge,
 // not the grey smear that quantising a noisy average would give. One ray per
 // light keeps the cost proportional to the light count (toon scenes have few).
-// The environment is ambient: its irradiance for the normal is exact and
-// unshadowed (a sampled sky adds noise to every band edge it lifts).
+//
+// The environment. Its irradiance for the normal is exact (closed form for the
+// constant and gradient skies), and it counts as a light of `environment` times
+// its strength, received and reference alike. At full weight a sky as bright as
+// the key light lifts every side to nearly the full level and washes the bands
+// out, so the default is 0.25: the sky lifts and tints the shadow side a little,
+// as a fill light would, and the key light places the bands. At 0 the sky adds
+// nothing (the level is that of a scene without it); in a scene lit by the sky
+// alone any weight above 0 gives the same bands, the level being relative to the
+// brightest light. Unshadowed by default, so it adds no noise to the band edges
+// it moves. With `environment_shadows` one cosine-weighted shadow ray per sample
+// (from the toon block, like an area light's) decides whether the sky counts for
+// that sample, and the level is quantised per sample as above: the bands converge
+// to their average over the visible part of the hemisphere, like ambient
+// occlusion (exact for a constant sky; a gradient sky's occluded part is weighted
+// by the cosine, not by its radiance).
 #include "core/integrator/toon_shading.h"
 
+#include "core/geometry/ray.h"
 #include "core/integrator/light_sampling.h"
+#include "core/math/frame.h"
+#include "core/sampling/warp.h"
 
 #include <cmath>
 #include <vector>
@@ -53,23 +70,34 @@ Color sky_irradiance(const EnvironmentLight& env, float n_y) {
          (env.nadir - env.horizon) * clamped_cosine_product(-n_y);
 }
 
-// The sky is ambient light: its exact unshadowed irradiance for the normal, so it
-// lifts the bands evenly and adds no noise; shadows in the bands come from the
-// lights and emitters. Its reference is a surface facing its brightest part.
-LightTerm environment_term(const EnvironmentLight& env, const ToonHit& hit) {
+// The sky's exact irradiance for the normal, weighted by the material's
+// `environment`; with its shadows on, `u` picks the one direction that decides
+// whether this sample sees the sky. Its reference is a surface facing its
+// brightest part.
+LightTerm environment_term(const RenderScene& scene, const EnvironmentLight& env, const ToonMaterial& m,
+                           const ToonHit& hit, Vec2 u, uint32_t* rays) {
   LightTerm t;
+  if (!(m.environment > 0.f)) return t;
   t.reference = sky_irradiance(env, 1.f);
   for (float n_y : {-1.f, 0.f}) {
     const Color e = sky_irradiance(env, n_y);
     if (luminance(e) > luminance(t.reference)) t.reference = e;
   }
-  t.received = glm::max(sky_irradiance(env, hit.ns.y), Color(0.f));
+  t.reference *= m.environment;
+  if (m.environment_shadows) {
+    const Vec3 wi = Frame::from_z(hit.ns).to_world(sample_cosine_hemisphere(u));
+    if (!(glm::dot(hit.ref.n, wi) > 0.f)) return t;  // into the surface itself
+    ++*rays;
+    if (scene.geometry.occluded(spawn_ray(hit.ref.p, hit.ref.p_error, hit.ref.n, wi), kInfinity)) return t;
+  }
+  t.received = m.environment * glm::max(sky_irradiance(env, hit.ns.y), Color(0.f));
   return t;
 }
 
-LightTerm light_term(const RenderScene& scene, const Light& light, const ToonHit& hit, Vec2 u,
-                     uint32_t* rays) {
-  if (const auto* env = std::get_if<EnvironmentLight>(&light)) return environment_term(*env, hit);
+LightTerm light_term(const RenderScene& scene, const Light& light, const ToonMaterial& m, const ToonHit& hit,
+                     Vec2 u, uint32_t* rays) {
+  if (const auto* env = std::get_if<EnvironmentLight>(&light))
+    return environment_term(scene, *env, m, hit, u, rays);
   LightTerm t;
   const auto ls = sample_light(scene, light, hit.ref, u);
   if (const auto* spot = std::get_if<SpotLight>(&light)) {
@@ -115,10 +143,11 @@ ToonShade toon_shade(const RenderScene& scene, const ToonMaterial& m, const Toon
   Color tint_sum(0.f);
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
-    const bool sampled =
-        std::holds_alternative<MeshAreaLight>(light) || std::holds_alternative<SphereAreaLight>(light);
+    const bool sampled = std::holds_alternative<MeshAreaLight>(light) ||
+                         std::holds_alternative<SphereAreaLight>(light) ||
+                         (std::holds_alternative<EnvironmentLight>(light) && m.environment_shadows);
     const LightTerm t = light_term(
-        scene, light, hit, sampled ? sampler.get_pair(toon_light_pair(hit.depth, l)) : Vec2(0.5f), rays);
+        scene, light, m, hit, sampled ? sampler.get_pair(toon_light_pair(hit.depth, l)) : Vec2(0.5f), rays);
     if (!is_finite(t.reference) || !is_finite(t.received)) continue;
     reference_max = std::max(reference_max, luminance(t.reference));
     received += luminance(t.received);

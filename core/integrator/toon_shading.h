@@ -10,8 +10,8 @@
 
 namespace inkray {
 
-// Toon lighting draws one 2D sample per light that needs one (area lights and
-// the environment). Those pairs live in a block of their own, far above the
+// Toon lighting draws one 2D sample per light that needs one (area lights, and
+// the environment when the material shadows it). Those pairs live in a block of their own, far above the
 // path's per-bounce pairs, so the number of lights never shifts another
 // decision's dimension.
 inline constexpr uint32_t kToonPairBlock = 1u << 24;

@@ -34,6 +34,8 @@ struct ToonMaterial {
   Color rim_color{1.f};
   float rim_width = 0.3f;
   float rim_threshold = 0.5f;
+  float environment = 0.25f;  // weight of the sky in the light level (toon_shading.cpp)
+  bool environment_shadows = false;
   bool receive_indirect = false;
   bool bounce_indirect = true;
 };

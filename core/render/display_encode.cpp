@@ -25,26 +25,19 @@ struct SrgbTable {
   }
 };
 
-// Narkowicz's fit of the ACES filmic curve: highlights roll off instead of clipping.
-float filmic(float x) {
-  x *= 0.6f;
-  return std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.f, 1.f);
-}
-
 }  // namespace
 
 std::vector<uint8_t> encode_display(const RgbImage& image, const DisplayEncoding& encoding) {
   static const SrgbTable table;
-  const float scale = std::exp2(encoding.exposure);
+  const DisplayMapping display(encoding);
+  const bool raw = encoding.transform == ViewTransform::raw;
   std::vector<uint8_t> out(image.pixels.size() * 4);
   for (size_t i = 0; i < image.pixels.size(); ++i) {
-    Color c = image.pixels[i] * scale;
+    const Color c = image.pixels[i];
     uint8_t* px = &out[i * 4];
     for (int k = 0; k < 3; ++k) {
-      float v = c[k];
-      if (encoding.transform == ViewTransform::filmic) v = filmic(v);
-      px[k] = encoding.transform == ViewTransform::raw ? uint8_t(std::clamp(v, 0.f, 1.f) * 255.f + 0.5f)
-                                                         : table(v);
+      const float v = display.to_display(c[k]);
+      px[k] = raw ? uint8_t(std::clamp(v, 0.f, 1.f) * 255.f + 0.5f) : table(v);
     }
     px[3] = 255;
   }

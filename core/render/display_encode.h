@@ -4,23 +4,16 @@
 #pragma once
 
 #include "core/image/rgb_image.h"
+#include "core/image/view_transform.h"
 
 #include <array>
 #include <cstdint>
-#include <string_view>
 #include <vector>
 
 namespace inkray {
 
-enum class ViewTransform { standard, filmic, raw };
-inline constexpr std::array<std::string_view, 3> kViewTransformNames = {"standard", "filmic", "raw"};
-
-struct DisplayEncoding {
-  float exposure = 0.f;  // stops
-  ViewTransform transform = ViewTransform::standard;
-};
-
-// 4 bytes per pixel, row 0 at the top, alpha 255.
+// 4 bytes per pixel, row 0 at the top, alpha 255: the display-linear values of
+// DisplayMapping, sRGB-encoded, but for raw, whose values are written as they are.
 std::vector<uint8_t> encode_display(const RgbImage& image, const DisplayEncoding& encoding);
 
 // Paints the inner border, `thickness` pixels wide, of the pixels whose id

@@ -193,7 +193,7 @@ void ProgressiveRenderer::run() {
                               int(std::ceil(region.x1 * w)), int(std::ceil(region.y1 * h)));
       curve_.clear();
       ++accumulation_;
-      resolved_current_ = false;
+      base_current_ = false;
       active_ = true;
     } else if (restart) {
       aovs_ = aovs_for(view);
@@ -202,7 +202,7 @@ void ProgressiveRenderer::run() {
       const int divisor = region.empty() ? kFirstPreviewDivisor : 1;
       session_.set_scene(scene, aovs_, divisor);
       ++accumulation_;
-      resolved_current_ = false;
+      base_current_ = false;
       const int w = session_.film().width(), h = session_.film().height();
       if (region.empty()) {
         session_.set_region(0, 0, 0, 0);
@@ -213,6 +213,8 @@ void ProgressiveRenderer::run() {
       active_ = true;
     } else if (keep_film) {
       session_.update_scene(scene);
+      // A line edit composites the cached base again; a filter edit filters anew.
+      if (!same_base(base_settings_, scene->settings)) base_current_ = false;
       resolved_current_ = false;
       active_ = true;
       if (session_.stats().passes > 0) publish_snapshot(scene, view, limits, false);
@@ -227,7 +229,7 @@ void ProgressiveRenderer::run() {
       publish_snapshot(scene, view, limits, true);
       continue;
     }
-    resolved_current_ = false;  // the pass adds samples, finished or not
+    base_current_ = false;  // the pass adds samples, finished or not
     if (!session_.render_pass()) continue;  // cancelled: a newer request is waiting
     const RenderStats& stats = session_.stats();
     if (divisor == 1) curve_.push_back({stats.elapsed_seconds, stats.relative_error});
@@ -236,7 +238,7 @@ void ProgressiveRenderer::run() {
     if (divisor > 1) {
       session_.set_scene(scene, aovs_, divisor / 2);
       ++accumulation_;
-      resolved_current_ = false;
+      base_current_ = false;
     } else if (done) {
       active_ = false;
     }
@@ -262,13 +264,24 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
     // exposure slider still applies to make small errors visible.
     snap->rgba = encode_display(film.resolve_noise(), DisplayEncoding{view.encoding.exposure, ViewTransform::raw});
   } else {
-    if (!resolved_current_) {
+    if (!base_current_) {
       const Cancel cancel(&superseded_);
-      resolved_ = resolve_final(film, *scene, &session_.pool(), cancel);
-      if (resolved_.pixels.empty()) return;  // cut short: the newer document is waiting
+      base_ = resolve_base(film, scene->settings, &session_.pool(), cancel);
+      if (base_.pixels.empty()) return;  // cut short: the newer document is waiting
+      lines_ = gather_lines(film);
+      base_settings_ = scene->settings;
+      base_current_ = true;
+      resolved_current_ = false;
+    }
+    if (!film.has_lines()) {
+      resolved_ = {};
+    } else if (!resolved_current_ || !(resolved_for_ == view.encoding)) {
+      resolved_ = base_;  // reuses its pixels' storage
+      composite_lines(lines_, scene->outlines, view.encoding, resolved_);
+      resolved_for_ = view.encoding;
       resolved_current_ = true;
     }
-    snap->rgba = encode_display(resolved_, view.encoding);
+    snap->rgba = encode_display(film.has_lines() ? resolved_ : base_, view.encoding);
   }
   if (view.highlight_object >= 0 && film.aovs().has(Aov::object_id)) {
     // Previews are magnified, so their 1-pixel line is already thick on screen.

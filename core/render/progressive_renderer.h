@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/film/film.h"
+#include "core/film/resolve.h"
 #include "core/render/display_encode.h"
 #include "core/compiler/compile.h"
 #include "core/render/render_session.h"
@@ -77,7 +78,8 @@ class ProgressiveRenderer {
   // A new document: cancels the pass in flight and restarts from a preview.
   // Returns the revision that snapshots of this document will carry.
   uint64_t submit(const SceneDesc& scene);
-  void set_view(const ViewportView& view);      // re-encodes; re-renders only for a missing AOV
+  // Re-encodes, compositing the lines again; re-renders only for a missing AOV.
+  void set_view(const ViewportView& view);
   void set_limits(const ViewportLimits& limits);
   void set_region(const RegionRect& region);    // restarts at full resolution inside the region
   void set_paused(bool paused);
@@ -133,9 +135,18 @@ class ProgressiveRenderer {
   std::chrono::steady_clock::time_point revision_time_;
   bool first_publish_ = true, active_ = false;
   uint64_t accumulation_ = 0;
-  // The film's last final resolve, while no sample or resolve setting changed since:
-  // a new exposure or view transform re-encodes it without resolving again.
+  // The film's image without lines (mean and painterly filter) and its lines,
+  // while no sample changed since, and the settings it was filtered with: an edit
+  // of lines only keeps it. `resolved_` is it with the lines composited for
+  // `resolved_for_` (empty without lines): lines are composited in display space,
+  // so a new exposure or view transform composites them again over the same base
+  // (core/film/resolve.h), without filtering again.
+  RgbImage base_;
+  FilmLines lines_;
+  RenderSettings base_settings_;
+  bool base_current_ = false;
   RgbImage resolved_;
+  DisplayEncoding resolved_for_;
   bool resolved_current_ = false;
   AovSet aovs_;
   std::vector<ErrorSample> curve_;

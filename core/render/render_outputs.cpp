@@ -14,7 +14,10 @@ OutputsWritten write_render_outputs(RenderSession& session, const std::filesyste
   constexpr OutputsWritten kFailed = OutputsWritten::failed;
   OutputSet outputs;
   std::string bytes;
-  const RgbImage final_image = resolve_final(session.film(), session.scene(), &session.pool(), cancel);
+  // Lines are composited for the display a PNG is encoded with (exposure 0, standard
+  // view); a linear file holds the same pixels, so viewing it that way shows them too.
+  const RgbImage final_image =
+      resolve_final(session.film(), session.scene(), kFileDisplay, &session.pool(), cancel);
   if (final_image.pixels.empty()) {
     *error = image.string() + ": cancelled while applying the painterly filter; nothing was written";
     return OutputsWritten::cancelled;

@@ -5,6 +5,7 @@
 
 #include "core/base/cancel.h"
 #include "core/film/film.h"
+#include "core/image/view_transform.h"
 #include "core/render/render_session.h"
 
 #include <filesystem>
@@ -19,6 +20,11 @@ struct AovFile {
 };
 
 enum class OutputsWritten { all, failed, cancelled };
+
+// The display a written image is meant for: PNG files are encoded with it
+// (encode_srgb8), and lines are composited for it in every format
+// (core/film/resolve.h), so an EXR or PFM shown this way matches the PNG.
+inline constexpr DisplayEncoding kFileDisplay{0.f, ViewTransform::standard};
 
 // Stages every file, then renames them all in. On `failed`, *error names the file
 // that failed and no target has been touched. `cancel` stops the painterly filter

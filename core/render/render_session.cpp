@@ -1,7 +1,7 @@
 #include "core/render/render_session.h"
 
 #include "core/integrator/path_tracer.h"
-#include "core/npr/outlines/line_detector.h"
+#include "core/npr/outlines/line_sampling.h"
 
 #include <cmath>
 
@@ -29,10 +29,11 @@ void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet a
   divisor_ = std::max(divisor, 1);
   const int width = std::max((scene_->settings.width + divisor_ - 1) / divisor_, 1);
   const int height = std::max((scene_->settings.height + divisor_ - 1) / divisor_, 1);
-  lines_ = make_line_setup(*scene_);
+  lines_ = make_line_setup(*scene_, divisor_);
   film_ = std::make_unique<Film>(width, height, aovs, lines_.active);
   stats_ = {};
   tiles_done_.clear();
+  near_line_.clear();
 }
 
 bool RenderSession::render_pass() {
@@ -53,6 +54,8 @@ bool RenderSession::render_pass() {
   stats_.elapsed_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled_.load(std::memory_order_relaxed)) return false;
   std::fill(tiles_done_.begin(), tiles_done_.end(), 0);
+  if (lines_.active && lines_.adaptive && stats_.passes + 1 >= kLineProbeSamples)
+    mark_line_neighbourhoods(*film_, lines_, near_line_);
   ++stats_.passes;
   ++stats_.spp;
   for (uint64_t r : worker_rays_) stats_.rays += r;
@@ -86,11 +89,20 @@ void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
       const Ray ray = camera.generate_ray(film_pos, lens);
       FirstHit first_hit;
       PrimaryHit primary;
-      PathResult r =
-          trace_path(scene, camera, ray, sampler, want_first_hit ? &first_hit : nullptr, lines_.active ? &primary : nullptr);
+      // Adaptive line sampling decides before the path is traced, so a sample
+      // that needs no lines does not keep the camera hit for them.
+      StencilDraw draw;
       if (lines_.active) {
+        const LineSample& so_far = film_->line_sum(x, y);
+        draw = {uint32_t(x), uint32_t(y), uint32_t(so_far.rays), seed,
+                stencil_rays(lines_, so_far, film_->line_samples(x, y), near_line(x, y), uint32_t(x), uint32_t(y), pass, seed)};
+      }
+      const bool lines = lines_.active && draw.count > 0;
+      PathResult r =
+          trace_path(scene, camera, ray, sampler, want_first_hit ? &first_hit : nullptr, lines ? &primary : nullptr);
+      if (lines) {
         const float u_mix = sampler.get_pair(kFirstHitMixPair).x;
-        film_->add_lines(x, y, detect_lines(scene, lines_, camera, film_pos, lens, ray, primary, u_mix, sampler, &r.rays));
+        film_->add_lines(x, y, detect_lines(scene, lines_, camera, film_pos, lens, ray, primary, u_mix, draw, &r.rays));
       }
       rays += r.rays;
       if (clamp > 0.f) {

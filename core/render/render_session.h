@@ -49,6 +49,7 @@ class RenderSession {
     film_->clear_region(x0, y0, x1, y1);
     stats_ = {};
     tiles_done_.clear();
+    near_line_.clear();
     set_region(x0, y0, x1, y1);
   }
   int divisor() const { return divisor_; }
@@ -73,11 +74,16 @@ class RenderSession {
 
  private:
   void render_tile(int tile, int worker, uint32_t pass);
+  // Before the map exists every pixel counts as near a line.
+  bool near_line(int x, int y) const {
+    return near_line_.empty() || near_line_[size_t(y) * size_t(film_->width()) + size_t(x)];
+  }
 
   ThreadBudget pool_;
   std::shared_ptr<const RenderScene> scene_;
   std::unique_ptr<Film> film_;
   LineSetup lines_;  // what the scene's outlines ask of every sample
+  std::vector<uint8_t> near_line_;  // per film pixel, from the passes done (line_sampling.h)
   RenderStats stats_;
   std::atomic<bool> cancelled_{false};
   std::vector<uint64_t> worker_rays_;  // one slot per worker: no shared counter on the hot path

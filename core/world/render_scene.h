@@ -5,11 +5,13 @@
 
 #include "core/camera/camera.h"
 #include "core/geometry/embree_scene.h"
+#include "core/geometry/mesh_features.h"
 #include "core/lights/light.h"
 #include "core/materials/material.h"
 #include "core/math/transform.h"
 #include "core/document/desc.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,10 @@ struct RenderObject {
   uint32_t line_material = 0;  // material boundaries are drawn where this changes
   LineOverride lines;
   Transform to_object;  // world to the object's own space: where graph textures are fixed
+  // Smooth patch per triangle (prim) at the crease threshold, for crease lines: two
+  // hits in different patches lie across a feature edge (geometry/mesh_features.h).
+  // Null for spheres and strokes, and while crease lines are off.
+  std::shared_ptr<const std::vector<uint32_t>> crease_patches = nullptr;
 };
 
 struct RenderScene {
@@ -51,6 +57,14 @@ struct RenderScene {
 
   const Material& material_of(uint32_t object) const { return materials[objects[object].material]; }
 };
+
+// The smooth patch of triangle `prim` of an object at the scene's crease threshold,
+// or kNoPatch where the object has none (docs/architecture.md, "Mesh normals and
+// feature edges").
+inline uint32_t crease_patch(const RenderScene& scene, uint32_t object, uint32_t prim) {
+  const auto& patches = scene.objects[object].crease_patches;
+  return patches && prim < patches->size() ? (*patches)[prim] : kNoPatch;
+}
 
 // What a material graph reads at a hit on one of the scene's objects, seen from `wo`
 // at `depth` along the path (the light inputs are the integrator's to gather).

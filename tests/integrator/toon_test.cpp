@@ -152,11 +152,13 @@ TEST(ToonIntegrator, ThresholdPlacesTheTerminatorAnalytically) {
 }
 
 // The sky is exact, unshadowed ambient light: a constant sky of radiance 0.3
-// gives irradiance 0.3 pi everywhere, which lifts the level by 0.3 pi / 3 under a
-// key light of 3, moving the terminator to n.l = 0.5 - 0.1 pi, with no noise.
+// gives irradiance 0.3 pi everywhere, which at full weight (environment 1; the
+// default 0.25 is toon_environment_test.cpp's) lifts the level by 0.3 pi / 3 under
+// a key light of 3, moving the terminator to n.l = 0.5 - 0.1 pi, with no noise.
 TEST(ToonIntegrator, EnvironmentIsExactAmbientLight) {
   ToonDesc toon = plain_toon(Color(1.f), 2, 0.5f);
   toon.shadow_color = Color(0.f);
+  toon.environment = 1.f;
   SceneDesc d = far_sphere(toon, {directional({-1.f, 0.f, 0.f}, 3.f)});
   d.environment = ConstantEnvironmentDesc{Color(0.3f)};
   const std::vector<bool> mask = interior_mask(d);

@@ -7,6 +7,7 @@
 #include "core/compiler/compile.h"
 #include "core/math/hash.h"
 #include "core/sampling/warp.h"
+#include "support/render_helpers.h"
 
 #include <gtest/gtest.h>
 
@@ -29,11 +30,7 @@ std::shared_ptr<const RenderScene> compile(const SceneDesc& desc) {
 }
 
 ObjectDesc object(std::string name, ShapeVariant shape, std::string material) {
-  ObjectDesc o;
-  o.name = std::move(name);
-  o.shape = std::move(shape);
-  o.material = std::move(material);
-  return o;
+  return inkray::testing::make_object(std::move(name), std::move(shape), std::move(material));
 }
 
 SceneDesc with_lights(std::vector<LightDesc> lights) {

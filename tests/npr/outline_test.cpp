@@ -14,20 +14,9 @@ namespace {
 
 using testing::small_scene;
 
-struct Rendered {
-  std::shared_ptr<const RenderScene> scene;
-  std::unique_ptr<RenderSession> session;
-  RgbImage aov(Aov a) const { return session->film().resolve_aov(a); }
-};
+using Rendered = testing::RenderedFilm;
 
-Rendered render(const SceneDesc& desc, int spp) {
-  const CompileResult c = compile_scene(desc);
-  EXPECT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
-  Rendered r{c.scene, std::make_unique<RenderSession>(2)};
-  r.session->set_scene(c.scene);
-  render_batch(*r.session, {spp, 0.0});
-  return r;
-}
+Rendered render(const SceneDesc& desc, int spp) { return testing::render_film(desc, spp); }
 
 // Camera on +z looking at the origin; a grey backdrop quad at z = 0 and a
 // smaller quad at z = 2 in front of it, covering x in [-1, 1] (its left and

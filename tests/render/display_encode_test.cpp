@@ -1,12 +1,69 @@
-// The selection highlight is an inner border of the object's pixels in the
-// given colour, of the asked thickness, with a one-pixel rim of a second colour just
-// outside, and leaves everything else alone.
+// The viewport's encoding: the view transforms and their inverses (lines are
+// composited through them, core/film/resolve.h), and the selection highlight, an
+// inner border of the object's pixels in the given colour, of the asked
+// thickness, with a one-pixel rim of a second colour just outside, which leaves
+// everything else alone.
 #include "core/render/display_encode.h"
+
+#include "core/image/image_io.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace inkray {
 namespace {
+
+// Where a transform is invertible (standard below display white, filmic below its
+// white point, raw everywhere) the inverse undoes it: inverse(view(x)) == x to float
+// rounding (relative 1e-5; the filmic curve flattens near its white point, where a
+// rounding step of the display value is a larger step of x).
+TEST(ViewTransform, InverseUndoesTheViewInItsRange) {
+  for (float exposure : {-2.5f, 0.f, 1.f, 3.f}) {
+    const float scale = std::exp2(exposure);
+    for (ViewTransform t : {ViewTransform::standard, ViewTransform::filmic, ViewTransform::raw}) {
+      SCOPED_TRACE(std::string(kViewTransformNames[size_t(t)]) + " " + std::to_string(exposure));
+      const DisplayMapping mapping({exposure, t});
+      const float top = t == ViewTransform::standard ? 1.f / scale
+                        : t == ViewTransform::filmic ? 0.97f * filmic_white() / scale
+                                                     : 50.f;
+      for (int i = 0; i <= 1000; ++i) {
+        const float x = top * float(i) / 1000.f;
+        ASSERT_NEAR(mapping.from_display(mapping.to_display(x)), x, 1e-5f * std::max(x, 1e-3f)) << x;
+      }
+      // And the other way over the whole display range, which compositing relies on.
+      for (int i = 0; i <= 1000; ++i) {
+        const float d = float(i) / 1000.f;
+        ASSERT_NEAR(mapping.to_display(mapping.from_display(d)), d, 2e-6f) << d;
+      }
+    }
+  }
+}
+
+TEST(ViewTransform, FilmicCurveRisesToWhite) {
+  EXPECT_EQ(filmic_curve(0.f), 0.f);
+  EXPECT_EQ(filmic_curve_inverse(0.f), 0.f);
+  EXPECT_NEAR(filmic_curve(filmic_white()), 1.f, 1e-6f);
+  EXPECT_EQ(filmic_curve(2.f * filmic_white()), 1.f);
+  float previous = 0.f;
+  for (int i = 1; i <= 2000; ++i) {
+    const float y = filmic_curve(0.01f * float(i));
+    ASSERT_GE(y, previous);
+    previous = y;
+  }
+}
+
+// The PNG encoder and the viewport apply the same standard view.
+TEST(ViewTransform, PngAndViewportAgreeOnExposure) {
+  RgbImage image{64, 1, {}};
+  for (int x = 0; x < 64; ++x) image.pixels.push_back(Color(float(x) / 16.f));
+  for (float exposure : {-1.f, 0.f, 0.5f}) {
+    const std::vector<uint8_t> png = encode_srgb8(image, exposure);
+    const std::vector<uint8_t> shown = encode_display(image, {exposure, ViewTransform::standard});
+    // Within one step: the viewport encodes sRGB through a table.
+    for (size_t i = 0; i < 64; ++i) ASSERT_NEAR(int(png[3 * i]), int(shown[4 * i]), 1) << i;
+  }
+}
 
 TEST(PaintHighlight, InnerBorderOfTheObjectInItsColour) {
   // A 6x6 object (id 3) in the middle of a 10x10 image of id 1.

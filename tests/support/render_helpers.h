@@ -8,6 +8,32 @@
 
 namespace inkray::testing {
 
+inline ObjectDesc make_object(std::string name, ShapeVariant shape, std::string material) {
+  ObjectDesc o;
+  o.name = std::move(name);
+  o.shape = std::move(shape);
+  o.material = std::move(material);
+  return o;
+}
+
+// A compiled scene rendered for `spp` passes, kept with its session so tests
+// can read the film's AOVs.
+struct RenderedFilm {
+  std::shared_ptr<const RenderScene> scene;
+  std::unique_ptr<RenderSession> session;
+  RgbImage aov(Aov a) const { return session->film().resolve_aov(a); }
+};
+
+inline RenderedFilm render_film(const SceneDesc& desc, int spp, AovSet aovs = {}) {
+  const CompileResult c = compile_scene(desc);
+  EXPECT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
+  RenderedFilm r{c.scene, std::make_unique<RenderSession>(2)};
+  if (!c.scene) return r;
+  r.session->set_scene(c.scene, aovs);
+  render_batch(*r.session, {spp, 0.0});
+  return r;
+}
+
 inline SceneDesc small_scene(int width, int height) {
   SceneDesc d;
   d.render.width = width;

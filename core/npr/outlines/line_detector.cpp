@@ -1,5 +1,6 @@
 #include "core/npr/outlines/line_detector.h"
 
+#include "core/npr/outlines/line_gain.h"
 #include "core/npr/outlines/perceived_surface.h"
 #include "core/sampling/warp.h"
 
@@ -15,6 +16,13 @@ constexpr int kMaxStencilRays = 64;
 // ceiling is an object boundary, not an intersection).
 constexpr float kIntersectionAngle = 15.f;
 constexpr float kMinOcclusionJump = 0.02f;
+// Lines seen through a specular chain are drawn in full while the chain has
+// widened the stencil's footprint at most kCoherentSpread times, and not at all
+// beyond kIncoherentSpread (a smooth glass ball magnifies by a few times, a
+// mirror ball by up to ~20 near its rim; a bumpy or faceted refractor by
+// hundreds: docs/outlines.md, "Lines through mirrors and glass").
+constexpr float kCoherentSpread = 8.f;
+constexpr float kIncoherentSpread = 32.f;
 
 // Which line types see a break between the centre and a stencil ray.
 // `occlusion_jump`: the relative plane distance that counts as an occlusion.
@@ -37,12 +45,32 @@ uint32_t breaks(const PerceivedSurface& c, const PerceivedSurface& s, const Line
   if (!same_object) {
     found |= bit(LineType::object);
     if (!occlusion && cos_normals < setup.intersection_cos) found |= bit(LineType::intersection);
-  } else if (!occlusion && cos_normals < setup.crease_cos) {
-    found |= bit(LineType::crease);
+  } else if (!occlusion) {
+    // On a mesh, creases are its feature edges, found once at load: a line
+    // along the edge, not wherever noisy facets happen to bend between two
+    // samples. Analytic shapes compare normals.
+    const bool meshed = c.patch != kNoPatch && s.patch != kNoPatch;
+    if (meshed ? c.patch != s.patch : cos_normals < setup.crease_cos) found |= bit(LineType::crease);
   }
   if (c.material != s.material) found |= bit(LineType::material);
-  if (std::abs(c.distance - s.distance) / nearest > setup.depth_jump) found |= bit(LineType::depth);
+  // Depth lines are occlusions with a large gap behind them: a receding plane
+  // changes distance quickly but continuously and draws none.
+  if (occlusion && std::abs(c.distance - s.distance) / nearest > setup.depth_jump) found |= bit(LineType::depth);
   return found;
+}
+
+// How many times the chains of the centre and a stencil ray have widened the
+// angle between them, over the vertices where they touched the same objects,
+// plus the roughness blur of the vertices followed relative to the stencil.
+// theta0: the angle between the two camera rays; stencil_angle: the stencil's radius as an angle.
+float pair_spread(const PerceivedSurface& c, const PerceivedSurface& s, float theta0, float stencil_angle) {
+  float spread = 1.f;
+  const int common = std::min(c.chain_length, s.chain_length);
+  if (common > 0 && theta0 > 1e-6f * stencil_angle) {
+    for (int i = 0; i < common && c.chain_object[size_t(i)] == s.chain_object[size_t(i)]; ++i)
+      spread = std::max(spread, glm::length(c.chain_dir[size_t(i)] - s.chain_dir[size_t(i)]) / theta0);
+  }
+  return spread + 0.5f * (c.blur + s.blur) / std::max(stencil_angle, 1e-12f);
 }
 
 // The line width at this sample in pixels, before the per-type multipliers.
@@ -61,76 +89,129 @@ float sample_width_px(const RenderScene& scene, const LineSetup& setup, const Ca
   return width;
 }
 
+// One sample's stencil: its radius, and what a ray at each reach adds per type.
+struct Stencil {
+  float radius = 0.f;                         // pixels
+  std::array<float, kLineTypeCount> reach{};  // a type's disc radius, pixels (0: not drawn here)
+  std::array<float, kLineTypeCount> weight{};
+};
+
+// Types of different widths share one stencil: it spans the widest, and a
+// point that falls inside a narrower type's disc is a uniform point of that
+// disc, so counting it with weight (R / r)^2 keeps every type's coverage
+// unbiased. Types narrower than kMinLineWidthPx use a disc that wide and weigh
+// their rays by how much narrower they are; the ink-preserving gain (line_gain.h)
+// scales each type for the film's pixel size.
+Stencil make_stencil(const LineSetup& setup, float width_px) {
+  Stencil st;
+  for (int t = 0; t < kLineTypeCount; ++t) {
+    const float w = width_px * setup.width[size_t(t)];
+    if (!(setup.enabled & bit(LineType(t))) || !(w > 0.f)) continue;
+    const float drawn = std::max(w, kMinLineWidthPx);
+    st.reach[size_t(t)] = drawn * kStencilRadiusPerWidth;
+    st.radius = std::max(st.radius, st.reach[size_t(t)]);
+  }
+  for (int t = 0; t < kLineTypeCount; ++t) {
+    const float r = st.reach[size_t(t)];
+    if (r <= 0.f) continue;
+    const float w = width_px * setup.width[size_t(t)];
+    const float fade = std::min(w / kMinLineWidthPx, 1.f);
+    st.weight[size_t(t)] = sqr(st.radius / r) * fade * ink_preserving_gain(setup.film_pixel / r) / kLineGain;
+  }
+  return st;
+}
+
 }  // namespace
 
-LineSetup make_line_setup(const RenderScene& scene) {
+float chain_coherence(float spread) {
+  if (spread <= kCoherentSpread) return 1.f;
+  if (spread >= kIncoherentSpread) return 0.f;
+  return std::log(kIncoherentSpread / spread) / std::log(kIncoherentSpread / kCoherentSpread);
+}
+
+LineSetup make_line_setup(const RenderScene& scene, int divisor) {
   LineSetup s;
   const OutlineDesc& o = scene.outlines;
-  if (!o.any_line()) return s;
-  s.active = true;
+  if (!o.any_line() || !(o.width > 0.f)) return s;
   for (int t = 0; t < kLineTypeCount; ++t) {
     const LineStyleDesc& style = line_style(o, LineType(t));
-    if (!style.enabled) continue;
+    if (!style.enabled || !(style.width > 0.f)) continue;  // width 0 draws nothing
     s.enabled |= bit(LineType(t));
     s.width[size_t(t)] = style.width;
     s.max_width = std::max(s.max_width, style.width);
   }
-  s.rays = std::clamp(o.quality, 1, kMaxStencilRays);
-  // Narrower line types share the stencil: a point of the wide disc that falls
-  // inside a narrower one is a uniform point of that disc, so counting it with
-  // weight (R / r)^2 keeps every type's coverage unbiased.
-  for (int t = 0; t < kLineTypeCount; ++t)
-    if (s.width[size_t(t)] > 0.f) s.ray_weight[size_t(t)] = sqr(s.max_width / s.width[size_t(t)]) / float(s.rays);
+  if (!s.enabled) return s;
+  s.active = true;
+  s.quality = std::clamp(o.quality, 1, kMaxStencilRays);
+  s.adaptive = o.adaptive;
   const float height = scene.camera.image_height();
   s.width_px = o.unit == LineWidthUnit::pixels    ? o.width * height / o.reference_height
                : o.unit == LineWidthUnit::percent ? o.width * height / 100.f
                                                   : 0.f;
   s.world_width = o.unit == LineWidthUnit::world;
+  // World widths vary per sample; a couple of pixels stands for them.
+  s.nominal_radius_px =
+      std::max(s.world_width ? 2.f : s.width_px * s.max_width, kMinLineWidthPx) * kStencilRadiusPerWidth;
   s.miss_distance = std::max(glm::length(scene.scene_center - scene.camera.origin()), 1e-6f);
   s.crease_cos = std::cos(glm::radians(o.crease.threshold));
   s.intersection_cos = std::cos(glm::radians(kIntersectionAngle));
   s.depth_jump = o.depth.threshold;
+  s.pixel_angle = 1.f / scene.camera.world_to_pixels(1.f, 1.f);
+  // The film pixel's samples spread over a box 2 * filter_radius wide, or a
+  // Gaussian of sigma filter_radius / 3 (a box sqrt(12) sigma wide has its variance).
+  const RenderSettings& rs = scene.settings;
+  const float footprint = rs.filter == PixelFilter::box ? 2.f * rs.filter_radius : rs.filter_radius / 3.f * std::sqrt(12.f);
+  s.film_pixel = std::max(footprint, 1e-3f) * float(std::max(divisor, 1));
+  s.max_blur = kIncoherentSpread * s.nominal_radius_px * s.pixel_angle;
   return s;
 }
 
 LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const Camera& camera, Vec2 film_pos,
                         Vec2 lens, const Ray& centre_ray, const PrimaryHit& primary, float u_mix,
-                        const Sampler& sampler, uint32_t* rays) {
+                        const StencilDraw& draw, uint32_t* rays) {
   LineSample out;
-  const PerceivedSurface centre = find_perceived_surface(scene, centre_ray, u_mix, rays, &primary);
-  if (centre.hit && scene.objects[centre.object].lines.exclude) return out;
-  const float width = sample_width_px(scene, setup, camera, centre, centre_ray.d);
-  const float pixel_angle = 1.f / camera.world_to_pixels(1.f, 1.f);
-  const float radius = std::max(width * setup.max_width * kStencilRadiusPerWidth, 1e-3f);
-  const std::array<float, kLineTypeCount>& weight = setup.ray_weight;
+  out.rays = float(draw.count);
+  if (draw.count <= 0) return out;
+  const PerceivedSurface centre = find_perceived_surface(scene, centre_ray, u_mix, setup.max_blur, rays, &primary);
+  if (centre.lost || (centre.hit && scene.objects[centre.object].lines.exclude)) return out;
+  const Stencil stencil = make_stencil(setup, sample_width_px(scene, setup, camera, centre, centre_ray.d));
+  if (stencil.radius <= 0.f) return out;
+  const float stencil_angle = stencil.radius * setup.pixel_angle;
+  const Vec3 centre_dir = glm::normalize(centre_ray.d);
+  // An occlusion moves the surface much further off its tangent plane than a
+  // smooth surface bends within the stencil: 2% of the distance, or twice
+  // the stencil's angular radius for wide lines, where a crease would
+  // otherwise pass for an occlusion.
+  const float occlusion_jump = std::max(kMinOcclusionJump, 2.f * stencil_angle);
 
-  for (int k = 0; k < setup.rays; ++k) {
-    const Vec2 u = sampler.get_pair(kOutlinePairBlock + uint32_t(k));
-    const Vec2 offset = radius * sample_uniform_disk_concentric(u);
-    const float reach = glm::length(offset) / radius * setup.max_width;  // in width multipliers
+  for (int k = 0; k < draw.count; ++k) {
+    const Vec2 u = Sampler(draw.x, draw.y, draw.first + uint32_t(k), draw.seed).get_pair(kOutlinePairBlock);
+    const Vec2 offset = stencil.radius * sample_uniform_disk_concentric(u);
+    const float reach = glm::length(offset);
     uint32_t wanted = 0;
     for (int t = 0; t < kLineTypeCount; ++t)
-      if ((setup.enabled & bit(LineType(t))) && reach <= setup.width[size_t(t)]) wanted |= bit(LineType(t));
+      if (stencil.reach[size_t(t)] > 0.f && reach <= stencil.reach[size_t(t)]) wanted |= bit(LineType(t));
     if (!wanted) continue;
-    const PerceivedSurface s =
-        find_perceived_surface(scene, camera.generate_ray(film_pos + offset, lens), u_mix, rays);
-    if (s.hit && scene.objects[s.object].lines.exclude) continue;
-    // An occlusion moves the surface much further off its tangent plane than a
-    // smooth surface bends within the stencil: 2% of the distance, or twice
-    // the stencil's angular radius for wide lines, where a crease would
-    // otherwise pass for an occlusion.
-    const float occlusion_jump = std::max(kMinOcclusionJump, 2.f * radius * pixel_angle);
+    const Ray ray = camera.generate_ray(film_pos + offset, lens);
+    const PerceivedSurface s = find_perceived_surface(scene, ray, u_mix, setup.max_blur, rays);
+    if (s.lost || (s.hit && scene.objects[s.object].lines.exclude)) continue;
     const uint32_t found = breaks(centre, s, setup, occlusion_jump) & wanted;
     if (!found) continue;
+    const float theta0 = glm::length(glm::normalize(ray.d) - centre_dir);
+    const float coherence = chain_coherence(pair_spread(centre, s, theta0, stencil_angle));
+    if (coherence <= 0.f) continue;
     float strongest = 0.f;
     for (int t = 0; t < kLineTypeCount; ++t)
       if (found & bit(LineType(t))) {
-        out.coverage[size_t(t)] += weight[size_t(t)];
-        strongest = std::max(strongest, weight[size_t(t)]);
+        const float w = coherence * stencil.weight[size_t(t)];
+        out.coverage[size_t(t)] += w;
+        strongest = std::max(strongest, w);
       }
     out.weight += strongest;
+    out.hit_rays += 1.f;
     // The line belongs to the nearer surface of the two.
     const PerceivedSurface& owner = !s.hit || (centre.hit && centre.distance <= s.distance) ? centre : s;
+    if (!owner.hit) continue;
     const LineOverride& lo = scene.objects[owner.object].lines;
     if (lo.override_color || owner.line_color) {
       out.override_weight += strongest;

@@ -28,8 +28,8 @@ inline const LineStyleDesc& line_style(const OutlineDesc& d, LineType t) {
   return d.silhouette;
 }
 
-// Coverage is the fraction of a sample's stencil that sees a break; a pixel's
-// line opacity is kLineGain times its mean, clamped to 1. With stencil points
+// Coverage is the fraction of stencil rays that see a break; a pixel's line
+// opacity is kLineGain times its mean, clamped to 1. With stencil points
 // spread uniformly over a disc of radius r, a straight edge at distance x*r
 // from the centre is seen by the fraction (acos x - x sqrt(1 - x^2)) / pi of
 // the disc: the line is solid within 0.40 r of the edge and half-transparent
@@ -40,12 +40,16 @@ inline constexpr float kStencilRadiusPerWidth = 1.f / 1.27f;
 
 inline float line_opacity(float mean_coverage) { return std::clamp(kLineGain * mean_coverage, 0.f, 1.f); }
 
-// One camera sample's contribution.
+// What one camera sample's stencil rays saw, summed over its rays: the film
+// adds these up and divides by the rays, so samples may trace different numbers
+// of stencil rays (adaptive line sampling, line_sampling.h).
 struct LineSample {
-  std::array<float, kLineTypeCount> coverage{};  // fraction of the stencil that saw a break, per type
-  float weight = 0.f;                // fraction that saw a break of any enabled type
+  std::array<float, kLineTypeCount> coverage{};  // summed weights of the rays that saw a break, per type
+  float weight = 0.f;                // ... of any enabled type
   float override_weight = 0.f;       // ... where the nearer surface overrides the line colour
   Color override_color{0.f};         // sum of those override colours, weighted alike
+  float rays = 0.f;                  // stencil rays drawn (the denominator)
+  float hit_rays = 0.f;              // rays that saw a break of any type, unweighted
 };
 
 }  // namespace inkray

@@ -3,32 +3,42 @@
 #include "core/base/overloaded.h"
 #include "core/materials/fresnel.h"
 
+#include <cmath>
 #include <optional>
 
 namespace inkray {
 namespace {
 
+// Where a line-finding ray goes on past a specular surface.
+struct Continuation {
+  Vec3 direction{0.f};
+  float blur = 0.f;  // angular spread of the surface's lobe around `direction`, radians
+};
+
 // The direction a line-finding ray continues in past a specular surface, or
-// nullopt where the surface is what is seen.
-std::optional<Vec3> continue_through(const Material& material, const SurfaceInteraction& si, const Vec3& wo) {
-  using Next = std::optional<Vec3>;
+// nullopt where the surface is what is seen. A GGX lobe of roughness alpha
+// tilts microfacet normals by about alpha radians: a reflection spreads by
+// twice that, a refraction by |1 - 1/eta| times it (the deflection of a ray
+// through a tilted interface near normal incidence).
+std::optional<Continuation> continue_through(const Material& material, const SurfaceInteraction& si,
+                                             const Vec3& wo) {
+  using Next = std::optional<Continuation>;
   return std::visit(Overloaded{
-                        // Rough and diffuse surfaces, emitters and flat colours are what is seen.
+                        // Diffuse surfaces, emitters and flat colours are what is seen.
                         [](const DiffuseMaterial&) -> Next { return std::nullopt; },
                         [&](const ConductorMaterial& c) -> Next {
-                          if (c.alpha > 0.f) return std::nullopt;
-                          return reflect(wo, si.ns);
+                          return Continuation{reflect(wo, si.ns), 2.f * c.alpha};
                         },
                         [&](const DielectricMaterial& d) -> Next {
-                          if (d.bsdf.alpha > 0.f) return std::nullopt;
                           // Glass shows mostly what is behind it: follow the refraction,
                           // and the reflection only where there is none.
-                          if (const auto r = refract(wo, si.ns, d.bsdf.eta)) return r->wt;
-                          return reflect(wo, si.ns);
+                          if (const auto r = refract(wo, si.ns, d.bsdf.eta))
+                            return Continuation{r->wt, std::abs(1.f - 1.f / d.bsdf.eta) * d.bsdf.alpha};
+                          return Continuation{reflect(wo, si.ns), 2.f * d.bsdf.alpha};
                         },
                         [](const EmissiveMaterial&) -> Next { return std::nullopt; },
                         [](const UnlitMaterial&) -> Next { return std::nullopt; },
-                        [&](const TransparentMaterial&) -> Next { return -wo; },
+                        [&](const TransparentMaterial&) -> Next { return Continuation{-wo, 0.f}; },
                         [](const ToonMaterial&) -> Next { return std::nullopt; },
                         // The caller resolves mixes and graphs first.
                         [](const MixMaterial&) -> Next { return std::nullopt; },
@@ -39,8 +49,8 @@ std::optional<Vec3> continue_through(const Material& material, const SurfaceInte
 
 }  // namespace
 
-PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float u_mix, uint32_t* rays,
-                                        const PrimaryHit* first) {
+PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float u_mix, float max_blur,
+                                        uint32_t* rays, const PrimaryHit* first) {
   PerceivedSurface out;
   const bool follow = scene.outlines.in_reflections;
   for (int chain = 0; chain <= kMaxPerceivedChain; ++chain) {
@@ -72,14 +82,21 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     }
     out.distance += length;
 
-    std::optional<Vec3> next;
-    if (follow && !object.lines.stop_lines && chain < kMaxPerceivedChain)
+    std::optional<Continuation> next;
+    if (follow && !object.lines.stop_lines) {
       next = continue_through(*material, si, wo);
+      if (next && out.blur + next->blur > max_blur) next.reset();  // too rough: the surface is what is seen
+    }
+    if (next && chain == kMaxPerceivedChain) {
+      out.lost = true;  // still bouncing: no surface within reach
+      return out;
+    }
     if (!next) {
       out.hit = true;
       out.object = si.object;
       out.identity = object.source;
       out.material = object.line_material;
+      out.patch = crease_patch(scene, si.object, si.prim);
       out.p = si.p;
       const bool flip = glm::dot(wo, si.ng) < 0.f;
       out.ng = flip ? -si.ng : si.ng;
@@ -92,8 +109,12 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
       return out;
     }
     if (out.via == kDirect) out.via = object.source;
-    const Normal3 side = glm::dot(*next, si.ng) > 0.f ? si.ng : -si.ng;
-    ray = spawn_ray(si.p, si.p_error, side, *next);
+    out.chain_object[size_t(chain)] = object.source;
+    out.chain_dir[size_t(chain)] = glm::normalize(next->direction);
+    out.chain_length = chain + 1;
+    out.blur += next->blur;
+    const Normal3 side = glm::dot(next->direction, si.ng) > 0.f ? si.ng : -si.ng;
+    ray = spawn_ray(si.p, si.p_error, side, next->direction);
   }
   return out;
 }
