@@ -223,6 +223,7 @@ void materialise(const ClosureLeaf& leaf, const Vec3* r, Material& scratch) {
                    m.rim_color = input_color(reg(9));
                    m.rim_width = num(10, 0.f, 1.f);
                    m.rim_threshold = num(11, 0.f, 1.f);
+                   m.environment = std::max(reg(12).x, 0.f);
                  },
                  // Graph compilation makes no leaf of these.
                  [](MixMaterial&) {},

@@ -103,16 +103,25 @@ TEST(DisplayLines, ViewportAndFileShowTheSamePixels) {
         DisplayEncoding{0.5f, ViewTransform::raw}}) {
     SCOPED_TRACE(std::string(kViewTransformNames[size_t(display.transform)]) + " " +
                  std::to_string(display.exposure));
-    const uint64_t before = renderer.generation();
+    const RgbImage fresh = resolve_final(film, *files.scene, display);
+    const std::vector<uint8_t> expected = encode_display(fresh, display);
+    uint64_t seen = renderer.generation();
     ViewportView view;
     view.encoding = display;
     renderer.set_view(view);
-    const auto now = next_snapshot(renderer, before);
+    // A snapshot published just before the change may still arrive first: wait
+    // for the one made for this display.
+    std::shared_ptr<const ViewportSnapshot> now;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (std::chrono::steady_clock::now() < until) {
+      now = next_snapshot(renderer, seen);
+      if (!now || now->rgba == expected) break;
+      seen = renderer.generation();
+    }
     ASSERT_TRUE(now);
     EXPECT_EQ(now->accumulation, shown->accumulation) << "a display change restarted the film";
     EXPECT_EQ(now->stats.spp, shown->stats.spp);
-    const RgbImage fresh = resolve_final(film, *files.scene, display);
-    EXPECT_EQ(now->rgba, encode_display(fresh, display));
+    EXPECT_EQ(now->rgba, expected);
     if (display.transform == ViewTransform::standard) {
       EXPECT_LE(max_difference(now->rgba, encode_srgb8(fresh, display.exposure)), 1);
     }

@@ -116,7 +116,9 @@ Stencil make_stencil(const LineSetup& setup, float width_px) {
     if (r <= 0.f) continue;
     const float w = width_px * setup.width[size_t(t)];
     const float fade = std::min(w / kMinLineWidthPx, 1.f);
-    st.weight[size_t(t)] = sqr(st.radius / r) * fade * ink_preserving_gain(setup.film_pixel / r) / kLineGain;
+    const float gain = width_px == setup.width_px ? setup.gain_at_width[size_t(t)]
+                                                  : ink_preserving_gain(setup.film_pixel / r);
+    st.weight[size_t(t)] = sqr(st.radius / r) * fade * gain / kLineGain;
   }
   return st;
 }
@@ -163,6 +165,10 @@ LineSetup make_line_setup(const RenderScene& scene, int divisor) {
   const float footprint = rs.filter == PixelFilter::box ? 2.f * rs.filter_radius : rs.filter_radius / 3.f * std::sqrt(12.f);
   s.film_pixel = std::max(footprint, 1e-3f) * float(std::max(divisor, 1));
   s.max_blur = kIncoherentSpread * s.nominal_radius_px * s.pixel_angle;
+  for (int t = 0; t < kLineTypeCount; ++t) {
+    const float drawn = std::max(s.width_px * s.width[size_t(t)], kMinLineWidthPx);
+    s.gain_at_width[size_t(t)] = ink_preserving_gain(s.film_pixel / (drawn * kStencilRadiusPerWidth));
+  }
   return s;
 }
 

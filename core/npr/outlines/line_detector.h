@@ -35,6 +35,9 @@ struct LineSetup {
   float pixel_angle = 0.f;     // radians per pixel of the full image at its centre
   float film_pixel = 1.f;      // width of a film pixel's sample footprint, in full-image pixels
   float max_blur = 0.f;        // roughness blur, radians, beyond which mirrors and glass are not followed
+  // Per-type ink-preserving gains (line_gain.h) for samples at width_px, the
+  // usual case: only world widths, falloff and width overrides need their own.
+  std::array<float, kLineTypeCount> gain_at_width{};
 };
 
 // `divisor`: the film has one pixel per divisor x divisor image pixels (an
