@@ -23,7 +23,12 @@ namespace {
 // colours' own inputs: the object's material and the emitter's colour jitter.
 struct StrokeShape {
   std::vector<SurfacePoint> roots;
-  std::shared_ptr<const ShapeBvh> bvh;  // the white ribbons with the brush's alpha test
+  std::vector<uint32_t> first_vertex;  // stroke i owns vertices [first_vertex[i], first_vertex[i + 1])
+  // The ribbons with the brush's alpha test. Its mesh is painted as painted_key
+  // says (the paint of its first compile), and serves as the painted mesh while
+  // that paint holds: most compiles copy nothing.
+  std::shared_ptr<const ShapeBvh> bvh;
+  std::string painted_key;
 };
 
 struct BuiltStrokes {
@@ -112,17 +117,24 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
     auto shape = std::make_shared<StrokeShape>();
     shape->roots = place_roots(*surface, size_t(e.count), uint32_t(e.seed), nullptr, cancel);
     if (cancel.requested()) return std::nullopt;
-    // Colours are painted in below; the ribbons are built white.
-    const std::vector<Color> white(shape->roots.size(), Color(1.f));
-    StrokeGeometry geometry = build_stroke_mesh(*surface, shape->roots, white, e, cancel);
+    // Painted in the colours of this compile, which later compiles reuse while they hold.
+    const RenderObject& base = scene.objects[*object];
+    const std::vector<Color> colors =
+        stroke_colors(scene.materials, base.material, shape->roots, e, base.to_object);
+    StrokeGeometry geometry = build_stroke_mesh(*surface, shape->roots, colors, e, cancel);
     if (cancel.requested()) return std::nullopt;  // unfinished ribbons are never cached
-    mask->triangles_per_item = 2 * uint32_t(std::max(e.segments, 1));
+    mask->triangles = std::move(geometry.alpha);
     // Every stroke vertex lies within max_lift of the surface; the margin covers
     // the surface curving away from a ribbon's plane beside it.
     mask->layer_thickness = 1.5f * geometry.max_lift;
+    mask->paint = true;  // its object casts the shadow; the later stroke lies on top
+    mask->quads = true;  // stroke_mesh.h: cells of two triangles
+    shape->first_vertex = std::move(geometry.first_vertex);
+    shape->painted_key = built.key + "|" + paint_key(desc, e, scene.material_names[base.material]);
     shape->bvh = std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(geometry.mesh)),
                                                   std::move(mask));
     ++build.counters.shape_bvhs;
+    ++build.counters.stroke_paints;
     built.shape = build.assets.keep<StrokeShape>(built.key, std::move(shape));
     ++build.counters.stroke_sets;
   }
@@ -154,22 +166,23 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
     object.light = -1;
     const uint32_t base_material = scene.objects[b.base_object].material;
     scene.objects.push_back(std::move(object));
-    const std::string key =
-        b.key + "|" + paint_key(desc, *b.emitter, scene.material_names[base_material]);
-    auto painted = build.assets.find<Shape>(key);
+    const std::string key = b.key + "|" + paint_key(desc, *b.emitter, scene.material_names[base_material]);
+    std::shared_ptr<const Shape> painted;
+    if (key == b.shape->painted_key) painted = b.shape->bvh->shared_shape();
+    if (!painted) painted = build.assets.find<Shape>(key);
     if (!painted) {
-      // Stroke i owns the same number of consecutive vertices (stroke_mesh.h).
-      const std::vector<Color> colors = stroke_colors(scene.materials, base_material, b.shape->roots, *b.emitter,
-                                                         scene.objects[b.base_object].to_object);
+      const std::vector<Color> colors = stroke_colors(scene.materials, base_material, b.shape->roots,
+                                                      *b.emitter, scene.objects[b.base_object].to_object);
       TriangleMesh mesh = std::get<TriangleMesh>(b.shape->bvh->shape());
-      const size_t per_stroke = colors.empty() ? 0 : mesh.colors.size() / colors.size();
+      const std::vector<uint32_t>& first = b.shape->first_vertex;
       for (size_t i = 0; i < colors.size(); ++i)
-        std::fill_n(mesh.colors.begin() + std::ptrdiff_t(i * per_stroke), per_stroke, colors[i]);
+        std::fill(mesh.colors.begin() + std::ptrdiff_t(first[i]),
+                  mesh.colors.begin() + std::ptrdiff_t(first[i + 1]), colors[i]);
       painted = build.assets.keep<Shape>(key, std::make_shared<const Shape>(std::move(mesh)));
       ++build.counters.stroke_paints;
     }
-    // The painted copy is what hits read (its vertex colours); the white ribbons'
-    // BVH traces it, unchanged by a repaint. Strokes lie where they grew: in world space.
+    // The painted mesh is what hits read (its vertex colours); the ribbons' BVH
+    // traces it, unchanged by a repaint. Strokes lie where they grew: in world space.
     scene.geometry.add(b.shape->bvh, Transform{}, painted);
   }
 }

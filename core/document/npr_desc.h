@@ -119,7 +119,7 @@ template <class V> void visit_params(StrokeEmitterDesc& d, V& v) {
   v(path("brush_image", "Brush image (PNG with alpha), for brush \"image\"").files(FileType::brush), d.brush_image);
   v(number("bristles", 1, 256, "Bristle count across a procedural stroke").log_slider(1, 64), d.bristles);
   v(number("pressure", 0, 1, "Alpha falloff along the stroke"), d.pressure);
-  v(integer("segments", 1, 64, "Ribbon segments along each stroke"), d.segments);
+  v(integer("segments", 1, 64, "Most ribbon segments along each stroke; fewer where the surface is flat"), d.segments);
   v(number("offset", 0, 1e6, "Lift above the surface; 0 picks one from the object's size").log_slider(0.001, 1).labelled("Lift"), d.offset);
 }
 

@@ -10,6 +10,17 @@
 
 namespace inkray {
 
+// What the alpha test reads of one triangle, in one 16-byte load: the texture
+// coordinates and alphas of its corners, quantised, and its variant. Meshes
+// that carry these need no uvs of their own for the test.
+struct AlphaTriangle {
+  uint16_t u[3] = {0, 0, 0};  // in 1 / 65535
+  uint16_t v[3] = {0, 0, 0};
+  uint8_t fade[3] = {255, 255, 255};  // corner alpha, multiplying the texture's, in 1 / 255
+  uint8_t pick = 0;                   // the variant is (pick * variants) >> 8
+};
+static_assert(sizeof(AlphaTriangle) == 16);
+
 struct AlphaMask {
   int width = 0;     // texels across u
   int height = 0;    // texels along v
@@ -17,19 +28,42 @@ struct AlphaMask {
   std::vector<uint8_t> texels;  // variants * height * width, row v, column u; 255 is opaque
 
   // Consecutive triangles that form one item and share a variant (a stroke's
-  // ribbon); 0 puts every triangle on variant 0.
+  // ribbon); 0 puts every triangle on variant 0. Unused when `triangles` is set.
   uint32_t triangles_per_item = 0;
+  // Per triangle of the mesh: coordinates, corner alphas and variant. When
+  // empty the test reads the mesh's uvs and variant_of().
+  std::vector<AlphaTriangle> triangles;
   // A ray that starts within this distance of a hit triangle's plane ignores the
   // hit: the mesh is a thin layer on a surface (paint), and must not shadow the
   // surface it lies on, nor itself.
   float layer_thickness = 0.f;
+  // A layer of paint on a surface (strokes): shadow rays pass through it (the
+  // surface it lies on casts the shadow), and where its triangles overlap the
+  // one painted last is seen, whatever their heights: the triangle with the
+  // higher index, of the shape added later (EmbreeScene::intersect).
+  bool paint = false;
+  // Triangles 2q and 2q + 1 are the halves (a, b, a1) and (b, b1, a1) of the
+  // quad (a, b, b1, a1): the mesh is traced as quads, half the primitives.
+  bool quads = false;
 
   // Bilinear coverage in [0, 1] at uv (clamped to [0, 1]^2) of triangle prim.
   float coverage(Vec2 uv, uint32_t prim) const;
+  // The same in one variant, and in the triangle's own terms (corner alphas
+  // included) at barycentrics (b1, b2).
+  float coverage_in(int variant, Vec2 uv) const;
+  float coverage_of(const AlphaTriangle& t, float b1, float b2) const;
   uint32_t variant_of(uint32_t prim) const;
   uint8_t& at(int variant, int u, int v) { return texels[(size_t(variant) * height + v) * width + u]; }
   uint8_t at(int variant, int u, int v) const { return texels[(size_t(variant) * height + v) * width + u]; }
-  size_t memory_bytes() const { return texels.size(); }
+  size_t memory_bytes() const {
+    return texels.capacity() + triangles.capacity() * sizeof(AlphaTriangle);
+  }
 };
+
+// Quantises a coordinate in [0, 1] (clamped) for AlphaTriangle.
+inline uint16_t alpha_coordinate(float x) {
+  const float c = x > 0.f ? (x < 1.f ? x : 1.f) : 0.f;  // a NaN lands on 0
+  return uint16_t(c * 65535.f + 0.5f);
+}
 
 }  // namespace inkray

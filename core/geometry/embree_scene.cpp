@@ -6,7 +6,9 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdio>
@@ -51,31 +53,67 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
 // comes from a hash of the ray's bits and the triangle: the same ray always
 // decides the same way (Embree may report a triangle twice under spatial
 // splits), while the many rays of a pixel sample the coverage.
-bool alpha_accepts(const TriangleMesh& mesh, const AlphaMask& mask, const RTCFilterFunctionNArguments* args) {
+bool alpha_accepts(const TriangleMesh& mesh, const AlphaMask& mask, const RTCFilterFunctionNArguments* args,
+                   uint32_t prim, float b1, float b2) {
   RTCRayN* ray = args->ray;
   RTCHitN* hit = args->hit;
   const unsigned n = args->N;
-  const uint32_t prim = RTCHitN_primID(hit, n, 0);
-  const float b1 = RTCHitN_u(hit, n, 0), b2 = RTCHitN_v(hit, n, 0), b0 = 1.f - b1 - b2;
-  const Point3 o(RTCRayN_org_x(ray, n, 0), RTCRayN_org_y(ray, n, 0), RTCRayN_org_z(ray, n, 0));
   const Vec3 d(RTCRayN_dir_x(ray, n, 0), RTCRayN_dir_y(ray, n, 0), RTCRayN_dir_z(ray, n, 0));
   if (mask.layer_thickness > 0.f) {
     // A ray leaving the surface the layer lies on (or the layer itself) starts
     // within the layer's thickness of the triangle's plane: it passes through.
+    // Compared squared: most hits of a paint layer end here, before any lookup.
     const Vec3 ng(RTCHitN_Ng_x(hit, n, 0), RTCHitN_Ng_y(hit, n, 0), RTCHitN_Ng_z(hit, n, 0));
-    const float ng_len = glm::length(ng);
-    const float height = RTCRayN_tfar(ray, n, 0) * std::abs(glm::dot(d, ng));
-    if (height < mask.layer_thickness * ng_len) return false;
+    const float height = RTCRayN_tfar(ray, n, 0) * glm::dot(d, ng);
+    if (height * height < mask.layer_thickness * mask.layer_thickness * glm::dot(ng, ng)) return false;
   }
-  const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
-  const Vec2 uv = b0 * mesh.uvs[idx[0]] + b1 * mesh.uvs[idx[1]] + b2 * mesh.uvs[idx[2]];
-  const float alpha = mask.coverage(uv, prim);
+  float alpha = 0.f;
+  if (!mask.triangles.empty()) {
+    alpha = mask.coverage_of(mask.triangles[prim], b1, b2);
+  } else {
+    const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
+    const Vec2 uv = (1.f - b1 - b2) * mesh.uvs[idx[0]] + b1 * mesh.uvs[idx[1]] + b2 * mesh.uvs[idx[2]];
+    alpha = mask.coverage(uv, prim);
+  }
   if (alpha >= 1.f) return true;
   if (alpha <= 0.f) return false;
-  uint32_t h = hash_combine(std::bit_cast<uint32_t>(o.x), std::bit_cast<uint32_t>(o.y),
-                            std::bit_cast<uint32_t>(o.z), prim);
-  h = hash_combine(h, std::bit_cast<uint32_t>(d.x), std::bit_cast<uint32_t>(d.y), std::bit_cast<uint32_t>(d.z));
-  return u32_to_unit_float(h) < alpha;
+  // The ray's bits folded by odd multipliers, then one full mix: rays of a
+  // pixel differ in a few low bits of their direction, which this spreads.
+  const uint32_t bits = std::bit_cast<uint32_t>(RTCRayN_org_x(ray, n, 0)) * 0x9e3779b1u ^
+                        std::bit_cast<uint32_t>(RTCRayN_org_y(ray, n, 0)) * 0x85ebca77u ^
+                        std::bit_cast<uint32_t>(RTCRayN_org_z(ray, n, 0)) * 0xc2b2ae3du ^
+                        std::bit_cast<uint32_t>(d.x) * 0x27d4eb2fu ^
+                        std::bit_cast<uint32_t>(d.y) * 0x165667b1u ^
+                        std::bit_cast<uint32_t>(d.z) * 0xd3a2646du ^ prim * 0xfd7046c5u;
+  return u32_to_unit_float(hash_u32(bits ^ (bits >> 15))) < alpha;
+}
+
+// The last-painted paint hit found so far by a query resolving paint order.
+struct PaintHit {
+  uint32_t instance = 0, prim = 0;
+  float t = 0.f, u = 0.f, v = 0.f;
+};
+
+// Every query's context: Embree's, and for a query resolving paint order the
+// best paint hit so far (null otherwise).
+struct QueryContext {
+  RTCIntersectContext rtc;
+  PaintHit* paint = nullptr;
+};
+
+// The triangle and its barycentrics at (u, v) of quad q (AlphaMask::quads):
+// Embree splits the quad (v0, v1, v2, v3) into (v0, v1, v3) and (v2, v3, v1)
+// and reports the second's hits as (1 - u', 1 - v').
+void quad_to_triangle(uint32_t q, float u, float v, uint32_t* prim, float* b1, float* b2) {
+  if (u + v <= 1.f) {
+    *prim = 2 * q;
+    *b1 = u;
+    *b2 = v;
+  } else {  // (b, b1, a1) = (v1, v2, v3): weights 1 - v, u + v - 1, 1 - u
+    *prim = 2 * q + 1;
+    *b1 = u + v - 1.f;
+    *b2 = 1.f - u;
+  }
 }
 
 // We only call the single-ray API, so filters see N == 1. The user data is the
@@ -83,8 +121,33 @@ bool alpha_accepts(const TriangleMesh& mesh, const AlphaMask& mask, const RTCFil
 void alpha_filter(const RTCFilterFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const auto* bvh = static_cast<const ShapeBvh*>(args->geometryUserPtr);
-  if (!alpha_accepts(std::get<TriangleMesh>(bvh->shape()), *bvh->mask(), args)) args->valid[0] = 0;
+  uint32_t prim = RTCHitN_primID(args->hit, args->N, 0);
+  float b1 = RTCHitN_u(args->hit, args->N, 0), b2 = RTCHitN_v(args->hit, args->N, 0);
+  if (bvh->traced_as_quads()) quad_to_triangle(prim, b1, b2, &prim, &b1, &b2);
+  const TriangleMesh& mesh = std::get<TriangleMesh>(bvh->shape());
+  PaintHit* paint = reinterpret_cast<const QueryContext*>(args->context)->paint;
+  if (paint) {
+    // Resolving paint order: only paint painted after the best so far matters,
+    // and every hit is refused so the query looks on.
+    const uint32_t instance = args->context->instID[0];
+    args->valid[0] = 0;
+    if (instance < paint->instance || (instance == paint->instance && prim <= paint->prim)) return;
+    if (alpha_accepts(mesh, *bvh->mask(), args, prim, b1, b2))
+      *paint = {instance, prim, RTCRayN_tfar(args->ray, args->N, 0), b1, b2};
+    return;
+  }
+  if (!alpha_accepts(mesh, *bvh->mask(), args, prim, b1, b2)) args->valid[0] = 0;
 }
+
+// Instance masks: every shape but paint is kSolid, paint is kPaint. Shadow
+// rays see only kSolid (paint casts no shadow); closest-hit rays see both;
+// the query resolving paint order sees only kPaint.
+constexpr unsigned kSolid = 1u << 0;
+constexpr unsigned kPaint = 1u << 1;
+
+// Bytes Embree holds on the shared device (BVHs and their build scratch), from
+// its memory monitor.
+std::atomic<int64_t> g_embree_bytes{0};
 
 // Debian's Embree is built with assertions: a ray whose origin is not finite or
 // lies beyond about 1.8e18 aborts the process. compile_scene keeps geometry and
@@ -125,7 +188,8 @@ SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit
   // own intersector to reject t <= its error. Embree accepts t = 0, so a point
   // exact on an axis-aligned plane (zero error along its normal) would re-hit
   // it: use the largest axis bound on every axis.
-  si.p_error = Vec3(gamma_bound(7) * max_component(glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2)));
+  si.p_error =
+      Vec3(gamma_bound(7) * max_component(glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2)));
   const Vec3 n = glm::cross(p1 - p0, p2 - p0);
   const float len = glm::length(n);
   const MeshShading shading =
@@ -140,12 +204,26 @@ SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit
 
 }  // namespace
 
+size_t embree_memory_bytes() {
+  return size_t(std::max<int64_t>(0, g_embree_bytes.load(std::memory_order_relaxed)));
+}
+
 RTCDevice shared_embree_device() {
   static RTCDevice device = [] {
     RTCDevice d = rtcNewDevice(nullptr);
     if (!d) throw std::runtime_error("Embree: could not create a device");
     rtcSetDeviceErrorFunction(
-        d, [](void*, RTCError code, const char* msg) { std::fprintf(stderr, "Embree error %d: %s\n", int(code), msg); },
+        d,
+        [](void*, RTCError code, const char* msg) {
+          std::fprintf(stderr, "Embree error %d: %s\n", int(code), msg);
+        },
+        nullptr);
+    rtcSetDeviceMemoryMonitorFunction(
+        d,
+        [](void*, ssize_t bytes, bool) {
+          g_embree_bytes.fetch_add(int64_t(bytes), std::memory_order_relaxed);
+          return true;
+        },
         nullptr);
     return d;
   }();
@@ -154,9 +232,9 @@ RTCDevice shared_embree_device() {
 
 namespace {
 
-RTCScene new_embree_scene(RTCBuildQuality quality) {
+RTCScene new_embree_scene(RTCBuildQuality quality, RTCSceneFlags flags = RTC_SCENE_FLAG_ROBUST) {
   RTCScene scene = rtcNewScene(shared_embree_device());
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneFlags(scene, flags);
   rtcSetSceneBuildQuality(scene, quality);
   return scene;
 }
@@ -171,20 +249,59 @@ std::array<float, 12> embree_transform(const Transform& t) {
 
 }  // namespace
 
+namespace {
+
+// The quads (a, b, b1, a1) of a mesh whose triangles pair up as (a, b, a1) and
+// (b, b1, a1) (AlphaMask::quads); none when they do not.
+std::vector<uint32_t> quads_of(const TriangleMesh& mesh) {
+  const std::vector<uint32_t>& t = mesh.indices;
+  if (t.size() % 6 != 0) return {};
+  std::vector<uint32_t> quads(t.size() / 6 * 4);
+  for (size_t q = 0; q < t.size() / 6; ++q) {
+    const uint32_t* p = &t[6 * q];
+    if (p[3] != p[1] || p[5] != p[2]) return {};
+    quads[4 * q] = p[0];
+    quads[4 * q + 1] = p[1];
+    quads[4 * q + 2] = p[4];
+    quads[4 * q + 3] = p[2];
+  }
+  return quads;
+}
+
+}  // namespace
+
 ShapeBvh::ShapeBvh(std::shared_ptr<const Shape> shape, std::shared_ptr<const AlphaMask> mask)
     : shape_(std::move(shape)), mask_(std::move(mask)) {
   const auto* mesh = std::get_if<TriangleMesh>(shape_.get());
-  if (mask_ && (!mesh || mesh->uvs.size() < mesh->vertex_count()))
-    throw std::invalid_argument("ShapeBvh: an alpha-tested shape must be a mesh with a uv per vertex");
+  if (mask_ && (!mesh || (mesh->uvs.size() < mesh->vertex_count() &&
+                          mask_->triangles.size() < mesh->triangle_count())))
+    throw std::invalid_argument(
+        "ShapeBvh: an alpha-tested shape must be a mesh with a uv per vertex or per-triangle alpha data");
   RTCDevice device = shared_embree_device();
-  scene_ = new_embree_scene(RTC_BUILD_QUALITY_HIGH);
+  // Alpha-tested layers skip the robust (watertight) traversal: a ray slipping
+  // between two triangles of a stroke sees what lies under it, which an alpha
+  // test does anyway, and the robust mode costs a fifth of their traversal.
+  // Paint is built at medium quality: a tenth of the high quality's build time
+  // (no spatial splits) for the same traversal work, measured on strokes.
+  const bool paint = mask_ && mask_->paint;
+  scene_ = new_embree_scene(paint ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH,
+                            mask_ ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST);
   RTCGeometry geom = nullptr;
-  if (mesh) {
+  if (mesh && mask_ && mask_->quads) quad_indices_ = quads_of(*mesh);
+  if (mesh && !quad_indices_.empty()) {
+    geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->positions.data(), 0,
+                               sizeof(Point3), mesh->vertex_count());
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, quad_indices_.data(), 0,
+                               4 * sizeof(uint32_t), quad_indices_.size() / 4);
+  } else if (mesh) {
     geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->positions.data(), 0,
                                sizeof(Point3), mesh->vertex_count());
     rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh->indices.data(), 0,
                                3 * sizeof(uint32_t), mesh->triangle_count());
+  }
+  if (mesh) {
     if (mask_) {
       rtcSetGeometryUserData(geom, this);
       rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
@@ -201,7 +318,9 @@ ShapeBvh::ShapeBvh(std::shared_ptr<const Shape> shape, std::shared_ptr<const Alp
   rtcCommitGeometry(geom);
   rtcAttachGeometryByID(scene_, geom, 0);
   rtcReleaseGeometry(geom);
+  const int64_t before = g_embree_bytes.load(std::memory_order_relaxed);
   rtcCommitScene(scene_);
+  bvh_bytes_ = size_t(std::max<int64_t>(0, g_embree_bytes.load(std::memory_order_relaxed) - before));
 }
 
 ShapeBvh::~ShapeBvh() { rtcReleaseScene(scene_); }
@@ -242,6 +361,8 @@ void EmbreeScene::commit() {
     rtcSetGeometryTimeStepCount(geom, 1);
     const std::array<float, 12> xfm = embree_transform(instance.to_world);
     rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
+    const AlphaMask* mask = instance.bvh->mask();
+    rtcSetGeometryMask(geom, mask && mask->paint ? kPaint : kSolid);
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl_->scene, geom, id);
     rtcReleaseGeometry(geom);
@@ -260,37 +381,79 @@ bool EmbreeScene::same_instances(const EmbreeScene& other) const {
 }
 
 bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  QueryContext context;
+  rtcInitIntersectContext(&context.rtc);
   if (!traceable(ray, t_max)) return false;
   RTCRayHit rh{};
   rh.ray = to_rtc(ray, t_max);
+  rh.ray.mask = kSolid | kPaint;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->scene, &context, &rh);
+  rtcIntersect1(impl_->scene, &context.rtc, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   hit->t = rh.ray.tfar;
   hit->geometry = rh.hit.instID[0];
   hit->prim = rh.hit.primID;
   hit->barycentric = {rh.hit.u, rh.hit.v};
+  const ShapeBvh& bvh = *impl_->instances[hit->geometry].bvh;
+  if (bvh.traced_as_quads())
+    quad_to_triangle(rh.hit.primID, rh.hit.u, rh.hit.v, &hit->prim, &hit->barycentric.x, &hit->barycentric.y);
+  const AlphaMask* mask = bvh.mask();
+  if (mask && mask->paint) resolve_paint(ray, *mask, Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), hit);
   return true;
 }
 
+void EmbreeScene::resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, Hit* hit) const {
+  // Other paint under the hit lies within the layer's thickness of it, which
+  // the ray crosses over this distance (capped at grazing angles, where the
+  // layer would reach across the object). Paint nearer than the hit was refused
+  // already: the stretch starts at it.
+  const float d_len = glm::length(ray.d), ng_len = glm::length(ng);
+  if (!(d_len > 0.f) || !(ng_len > 0.f)) return;
+  const float cos_theta = std::abs(glm::dot(ray.d, ng)) / (d_len * ng_len);
+  const float reach = mask.layer_thickness / (std::max(cos_theta, 0.05f) * d_len);
+  // The same ray, so every alpha test decides as it did, over that stretch only.
+  QueryContext context;
+  rtcInitIntersectContext(&context.rtc);
+  PaintHit top{hit->geometry, hit->prim, hit->t, hit->barycentric.x, hit->barycentric.y};
+  context.paint = &top;
+  RTCRayHit rh{};
+  rh.ray = to_rtc(ray, hit->t + reach);
+  rh.ray.tnear = hit->t * (1.f - 1e-5f);
+  rh.ray.mask = kPaint;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &context.rtc, &rh);
+  *hit = {top.t, top.instance, top.prim, {top.u, top.v}};
+}
+
 bool EmbreeScene::occluded(const Ray& ray, float t_max) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  QueryContext context;
+  rtcInitIntersectContext(&context.rtc);
   if (!traceable(ray, t_max)) return false;
   RTCRay r = to_rtc(ray, t_max);
-  rtcOccluded1(impl_->scene, &context, &r);
+  r.mask = kSolid;
+  rtcOccluded1(impl_->scene, &context.rtc, &r);
   return r.tfar < 0.f;
 }
 
 SurfaceInteraction EmbreeScene::interaction(const Ray& ray, const Hit& hit) const {
-  const Shape& shape = *impl_->instances[hit.geometry].world;
+  const Instance& instance = impl_->instances[hit.geometry];
+  const Shape& shape = *instance.world;
   SurfaceInteraction si = std::holds_alternative<TriangleMesh>(shape)
                               ? triangle_interaction(std::get<TriangleMesh>(shape), hit, ray)
                               : std::get<Sphere>(shape).interaction(ray, hit.t);
   si.object = hit.geometry;
+  const AlphaMask* mask = instance.bvh->mask();
+  if (mask && mask->paint && mask->layer_thickness > 0.f) {
+    // Paint is seen in painting order, not by height, so its shading point may
+    // sit on top of the layer, on the side the ray came from: rays leaving it
+    // then start clear of the paint around it instead of testing and refusing
+    // every stroke there (the layer test in alpha_accepts).
+    const float side = glm::dot(ray.d, si.ng) < 0.f ? 1.f : -1.f;
+    si.p += side * mask->layer_thickness * si.ng;
+    si.p_error += Vec3(gamma_bound(2) * max_component(glm::abs(si.p)));
+  }
   return si;
 }
 

@@ -31,9 +31,11 @@ using Shape = std::variant<TriangleMesh, Sphere>;
 // "Geometry: one BVH per shape").
 class ShapeBvh {
  public:
-  // An alpha-tested mesh: a hit counts with probability mask->coverage(uv),
-  // decided by a hash of the ray and the triangle, so coverage anti-aliases over
-  // samples and shadow rays see partial coverage. Ordinary shapes pay nothing.
+  // An alpha-tested mesh: a hit counts with probability mask->coverage(uv)
+  // (or its per-triangle AlphaTriangle's), decided by a hash of the ray and the
+  // triangle, so coverage anti-aliases over samples and shadow rays see partial
+  // coverage; shadow rays skip paint (AlphaMask::paint). Ordinary shapes pay
+  // nothing.
   explicit ShapeBvh(std::shared_ptr<const Shape> shape, std::shared_ptr<const AlphaMask> mask = nullptr);
   ~ShapeBvh();
   ShapeBvh(const ShapeBvh&) = delete;
@@ -43,12 +45,23 @@ class ShapeBvh {
   const std::shared_ptr<const Shape>& shared_shape() const { return shape_; }
   const AlphaMask* mask() const { return mask_.get(); }
   RTCSceneTy* embree_scene() const { return scene_; }
+  // What Embree allocated for this BVH while building it (its memory monitor;
+  // approximate when other BVHs are built at the same time).
+  size_t bvh_bytes() const { return bvh_bytes_ + quad_indices_.capacity() * sizeof(uint32_t); }
+  // Whether Embree holds the mesh as quads (AlphaMask::quads): its hits then
+  // name a quad, which EmbreeScene turns back into a triangle of the mesh.
+  bool traced_as_quads() const { return !quad_indices_.empty(); }
 
  private:
   std::shared_ptr<const Shape> shape_;
   std::shared_ptr<const AlphaMask> mask_;
+  std::vector<uint32_t> quad_indices_;
   RTCSceneTy* scene_ = nullptr;
+  size_t bvh_bytes_ = 0;
 };
+
+// Bytes Embree holds now, over every BVH of the process (its memory monitor).
+size_t embree_memory_bytes();
 
 // The traceable geometry of a compiled scene: a top-level Embree scene of
 // instances, one per shape, each placing a ShapeBvh. Immutable after commit();
@@ -67,12 +80,14 @@ class EmbreeScene {
   // space, which hits, lights and strokes read: for a mesh, its vertices transformed
   // by to_world (the barycentrics of a hit are the same in both); the BVH's own
   // shape when to_world is the identity.
-  uint32_t add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world, std::shared_ptr<const Shape> world);
+  uint32_t add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
+               std::shared_ptr<const Shape> world);
   void commit();
   // Whether `other` places the same BVHs, by the same transforms, with the same
   // world shapes: then its committed top level can stand for this one.
   bool same_instances(const EmbreeScene& other) const;
 
+  // The closest hit; where it is on paint, the paint painted last there.
   bool intersect(const Ray& ray, float t_max, Hit* hit) const;
   bool occluded(const Ray& ray, float t_max) const;
   SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
@@ -81,6 +96,7 @@ class EmbreeScene {
   size_t shape_count() const { return impl_->instances.size(); }
   // The shape's alpha mask, or null for an opaque shape.
   const AlphaMask* alpha_mask(uint32_t index) const { return impl_->instances[index].bvh->mask(); }
+  const ShapeBvh& bvh(uint32_t index) const { return *impl_->instances[index].bvh; }
   // Bounds of everything, for directional and environment lights.
   void bounds(Point3* lo, Point3* hi) const;
 
@@ -96,6 +112,10 @@ class EmbreeScene {
     bool committed = false;
     ~Impl();
   };
+  // Replaces a hit on paint by the last-painted paint the ray passes through
+  // there (AlphaMask::paint).
+  void resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, Hit* hit) const;
+
   std::shared_ptr<Impl> impl_;
 };
 

@@ -29,6 +29,12 @@ SphereSurface::SphereSurface(const Sphere& sphere) : sphere_(sphere) {
   // |normal_m n| <= ||normal_m||_2 <= ||normal_m||_F for unit n: a valid bound, and
   // at most sqrt(3) too large, so rejection keeps over half of its tries.
   max_area_scale_ = det_ * frobenius(normal_m_);
+  // Round under its transform (a rotation and a uniform scale) when the normal
+  // matrix's columns are orthogonal and equally long.
+  const glm::dmat3 mtm = glm::transpose(normal_m_) * normal_m_;
+  const double scale = mtm[0][0];
+  round_ = std::abs(mtm[0][1]) + std::abs(mtm[0][2]) + std::abs(mtm[1][2]) <= 1e-9 * scale &&
+           std::abs(mtm[1][1] - scale) <= 1e-9 * scale && std::abs(mtm[2][2] - scale) <= 1e-9 * scale;
   // Midpoint quadrature over z = cos(theta) and phi; exact for round spheres, and
   // the integrand of an ellipsoid is smooth, so 256 x 512 points are plenty.
   constexpr int kZ = 256, kPhi = 512;
@@ -48,11 +54,15 @@ double SphereSurface::area_scale(const glm::dvec3& n_object) const {
   return det_ * glm::length(normal_m_ * n_object);
 }
 
-SurfacePoint SphereSurface::at(const glm::dvec3& n_object) const {
+Point3 SphereSurface::position(const glm::dvec3& n_object) const {
   const glm::dvec3 p_object = glm::dvec3(sphere_.center) + double(sphere_.radius) * n_object;
   const glm::dvec3 translation = glm::dvec3(glm::dvec4(glm::dmat4(sphere_.to_world.m)[3]));
+  return Point3(m_ * p_object + translation);
+}
+
+SurfacePoint SphereSurface::at(const glm::dvec3& n_object) const {
   SurfacePoint sp;
-  sp.p = Point3(m_ * p_object + translation);
+  sp.p = position(n_object);
   sp.n = Normal3(glm::normalize(normal_m_ * n_object));
   sp.ng = sp.n;
   const Vec3 n = Vec3(n_object);
@@ -61,7 +71,7 @@ SurfacePoint SphereSurface::at(const glm::dvec3& n_object) const {
   return sp;
 }
 
-SurfacePoint SphereSurface::sample(uint32_t seed, uint32_t index) const {
+glm::dvec3 SphereSurface::sample_direction(uint32_t seed, uint32_t index) const {
   // Uniform on the unit sphere, then rejection by the transform's local area scale.
   glm::dvec3 n(0.0, 1.0, 0.0);
   for (uint32_t attempt = 0; attempt < 64; ++attempt) {
@@ -69,16 +79,30 @@ SurfacePoint SphereSurface::sample(uint32_t seed, uint32_t index) const {
     const double phi = 2.0 * std::numbers::pi * unit_random(seed, index, 3 * attempt + 1);
     const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
     n = {s * std::cos(phi), z, s * std::sin(phi)};
-    if (unit_random(seed, index, 3 * attempt + 2) * max_area_scale_ < area_scale(n)) break;
+    // A round sphere needs no rejection: every direction has the same scale.
+    if (round_ || unit_random(seed, index, 3 * attempt + 2) * max_area_scale_ < area_scale(n)) break;
   }
-  return at(n);
+  return n;
+}
+
+SurfacePoint SphereSurface::sample(uint32_t seed, uint32_t index) const {
+  return at(sample_direction(seed, index));
+}
+
+Point3 SphereSurface::sample_position(uint32_t seed, uint32_t index) const {
+  return position(sample_direction(seed, index));
 }
 
 SurfacePoint SphereSurface::project(const Point3& p, float /*near*/) const {
   const glm::dvec3 p_object = glm::dvec3(glm::dmat4(sphere_.to_world.inv) * glm::dvec4(glm::dvec3(p), 1.0));
   const glm::dvec3 rel = p_object - glm::dvec3(sphere_.center);
   const double len = glm::length(rel);
-  return at(len > 0.0 ? rel / len : glm::dvec3(0.0, 1.0, 0.0));
+  const glm::dvec3 n_object = len > 0.0 ? rel / len : glm::dvec3(0.0, 1.0, 0.0);
+  SurfacePoint sp;  // growth reads no uv: spare the inverse trigonometry
+  sp.p = position(n_object);
+  sp.n = Normal3(glm::normalize(normal_m_ * n_object));
+  sp.ng = sp.n;
+  return sp;
 }
 
 }  // namespace inkray

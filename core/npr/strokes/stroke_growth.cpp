@@ -51,9 +51,10 @@ Vec3 step_direction(const SurfacePoint& sp, const Vec3& flow, float sign, float 
   return d == Vec3(0.f) ? carried : d;
 }
 
-// Walks `steps` steps from start, writing the stations after start to out in order.
-void walk(const StrokeSurface& surface, const SurfacePoint& start, const Vec3& flow, float sign,
-          const StrokeShape& shape, float step, int steps, SurfacePoint* out) {
+// Walks up to `steps` steps from start, writing the stations after start to
+// out in order; returns how many it wrote before a step left the surface.
+int walk(const StrokeSurface& surface, const SurfacePoint& start, const Vec3& flow, float sign,
+         const StrokeShape& shape, float step, int steps, SurfacePoint* out) {
   SurfacePoint sp = start;
   Vec3 previous(0.f);
   for (int k = 0; k < steps; ++k) {
@@ -62,11 +63,13 @@ void walk(const StrokeSurface& surface, const SurfacePoint& start, const Vec3& f
     const Vec3 d = step_direction(sp, flow, sign, shape.angle + shape.bend * s, previous);
     const Point3 target = sp.p + step * d;
     const SurfacePoint next = surface.project(target, glm::length(target - sp.p));
+    if (!step_lands(sp, next, step)) return k;
     previous = next.p - sp.p;
     if (previous == Vec3(0.f)) previous = d;  // a step that projected back onto itself
     sp = next;
     out[k] = sp;
   }
+  return steps;
 }
 
 }  // namespace
@@ -81,22 +84,34 @@ StrokeShape draw_stroke_shape(const StrokeEmitterDesc& e, uint32_t seed, uint32_
   shape.angle = jitter * (2.f * unit_random(seed, stroke, 2) - 1.f);
   // A painter's stroke curves a little: up to half the rotation jitter end to end.
   shape.bend = 0.5f * jitter * (2.f * unit_random(seed, stroke, 3) - 1.f);
-  shape.layer = int(hash_combine(seed, stroke, 4u) % uint32_t(kStrokeLayers));
   return shape;
 }
 
-void grow_stroke(const StrokeSurface& surface, const SurfacePoint& root, const Vec3& flow, const StrokeShape& shape,
-                 int segments, std::vector<SurfacePoint>* stations) {
+bool step_lands(const SurfacePoint& from, const SurfacePoint& to, float step) {
+  if (to.boundary) return false;
+  const float moved = glm::length(to.p - from.p);
+  // Further than the step: the closest point is on another part of the surface
+  // (a fold of a thin part); so is one whose normal turned by over 100 degrees.
+  return moved <= 1.5f * step && glm::dot(from.n, to.n) > kLandingCos;
+}
+
+void grow_stroke(const StrokeSurface& surface, const SurfacePoint& root, const Vec3& flow,
+                 const StrokeShape& shape, int segments, StrokeSpine* spine) {
   segments = std::max(segments, 1);
-  stations->resize(size_t(segments) + 1);
   const int back = segments / 2, front = segments - back;
   const float step = shape.length / float(segments);
-  SurfacePoint* out = stations->data();
-  out[back] = root;
-  // The tail half walks against the flow; its stations come out root-first, so reverse them.
-  walk(surface, root, flow, -1.f, shape, step, back, out);
-  std::reverse(out, out + back);
-  walk(surface, root, flow, 1.f, shape, step, front, out + back + 1);
+  std::vector<SurfacePoint>& st = spine->stations;
+  st.resize(size_t(segments) + 1);
+  // The tail half walks against the flow; its stations come out root-first.
+  const int tail = walk(surface, root, flow, -1.f, shape, step, back, st.data());
+  std::reverse(st.begin(), st.begin() + tail);
+  st[size_t(tail)] = root;
+  const int tip = walk(surface, root, flow, 1.f, shape, step, front, st.data() + tail + 1);
+  st.resize(size_t(tail + 1 + tip));
+  spine->v.resize(st.size());
+  for (size_t j = 0; j < st.size(); ++j) spine->v[j] = float(back - tail + int(j)) / float(segments);
+  spine->cut_tail = tail < back;
+  spine->cut_tip = tip < front;
 }
 
 }  // namespace inkray

@@ -55,6 +55,10 @@ SurfacePoint StrokeSurface::sample(uint32_t seed, uint32_t index) const {
   return std::visit([&](const auto& s) { return s.sample(seed, index); }, surface_);
 }
 
+Point3 StrokeSurface::sample_position(uint32_t seed, uint32_t index) const {
+  return std::visit([&](const auto& s) { return s.sample_position(seed, index); }, surface_);
+}
+
 SurfacePoint StrokeSurface::project(const Point3& p, float near) const {
   return std::visit([&](const auto& s) { return s.project(p, near); }, surface_);
 }

@@ -20,6 +20,7 @@ class StrokeSurface {
 
   double area() const;
   SurfacePoint sample(uint32_t seed, uint32_t index) const;
+  Point3 sample_position(uint32_t seed, uint32_t index) const;  // = sample(seed, index).p, cheaper
   // near: a distance within which a surface point is known to lie (a hint for
   // meshes; the answer does not depend on it).
   SurfacePoint project(const Point3& p, float near = kInfinity) const;

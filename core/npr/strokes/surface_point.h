@@ -14,6 +14,9 @@ struct SurfacePoint {
   Vec2 uv{0.f};
   Color color{1.f};  // the base mesh's interpolated vertex colour
   uint32_t prim = 0;
+  // A projection that landed on an open boundary of a mesh from beyond it: the
+  // point asked about lies off the surface, past its edge.
+  bool boundary = false;
 };
 
 }  // namespace inkray

@@ -1,6 +1,8 @@
 // Surfaces and emitters the stroke tests share.
 #pragma once
 
+#include "core/npr/strokes/stroke_mesh.h"
+#include "core/npr/strokes/stroke_placement.h"
 #include "core/npr/strokes/stroke_surface.h"
 #include "core/document/npr_desc.h"
 
@@ -43,6 +45,13 @@ inline StrokeEmitterDesc test_emitter(int count, int seed = 1) {
   e.length_max = 0.3f;
   e.rotation_jitter = 30.f;
   return e;
+}
+
+// Roots placed by the emitter's seed, every stroke mid-grey, ribbons built.
+inline StrokeGeometry build_test_strokes(const StrokeSurface& surface, const StrokeEmitterDesc& e) {
+  const auto roots = place_roots(surface, size_t(e.count), uint32_t(e.seed));
+  const std::vector<Color> colors(roots.size(), Color(0.5f));
+  return build_stroke_mesh(surface, roots, colors, e);
 }
 
 }  // namespace inkray::testing

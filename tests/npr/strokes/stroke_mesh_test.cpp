@@ -1,5 +1,6 @@
-// Ribbon meshes: the right size, bit-identical for a seed at any thread count,
-// and every vertex above the surface it lies on by no more than max_lift.
+// Ribbon meshes: laid out stroke by stroke, bit-identical for a seed at any
+// thread count, and every vertex above the surface it lies on by no more than
+// max_lift.
 #include "core/base/parallel.h"
 #include "core/npr/strokes/stroke_mesh.h"
 #include "core/npr/strokes/stroke_placement.h"
@@ -8,49 +9,81 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 namespace inkray {
 namespace {
 
+using testing::build_test_strokes;
 using testing::surface_of;
 using testing::test_emitter;
-
-StrokeGeometry build(const StrokeSurface& surface, const StrokeEmitterDesc& e) {
-  const auto roots = place_roots(surface, size_t(e.count), uint32_t(e.seed));
-  const std::vector<Color> colors(roots.size(), Color(0.5f));
-  return build_stroke_mesh(surface, roots, colors, e);
-}
 
 bool same_mesh(const TriangleMesh& a, const TriangleMesh& b) {
   return a.positions == b.positions && a.normals == b.normals && a.uvs == b.uvs && a.colors == b.colors &&
          a.indices == b.indices;
 }
 
-TEST(StrokeMesh, TwoVerticesPerStationTwoTrianglesPerSegment) {
+bool same_alpha(const StrokeGeometry& a, const StrokeGeometry& b) {
+  if (a.alpha.size() != b.alpha.size() || a.first_vertex != b.first_vertex) return false;
+  for (size_t t = 0; t < a.alpha.size(); ++t)
+    if (std::memcmp(&a.alpha[t], &b.alpha[t], sizeof(AlphaTriangle)) != 0) return false;
+  return true;
+}
+
+// Ribbons keep only the stations and columns they need to follow the surface
+// (stroke_mesh.h), so a stroke's vertex count varies: each stroke owns a
+// contiguous range of rows of 2, 3 or 5 vertices, and its triangles pair up
+// into cells of that range.
+TEST(StrokeMesh, EachStrokeOwnsRowsOfVerticesAndPairedTriangles) {
   const StrokeSurface surface = surface_of(testing::test_sphere());
   StrokeEmitterDesc e = test_emitter(300);
   e.segments = 5;
-  const StrokeGeometry g = build(surface, e);
-  EXPECT_EQ(g.mesh.vertex_count(), 300u * 2u * 6u);
-  EXPECT_EQ(g.mesh.triangle_count(), 300u * 2u * 5u);
+  const StrokeGeometry g = build_test_strokes(surface, e);
+  ASSERT_EQ(g.first_vertex.size(), 301u);
+  EXPECT_EQ(g.first_vertex.back(), g.mesh.vertex_count());
   EXPECT_EQ(g.mesh.uvs.size(), g.mesh.vertex_count());
   EXPECT_EQ(g.mesh.colors.size(), g.mesh.vertex_count());
-  for (uint32_t i : g.mesh.indices) ASSERT_LT(i, g.mesh.vertex_count());
+  EXPECT_EQ(g.mesh.normals.size(), g.mesh.vertex_count());
+  EXPECT_EQ(g.alpha.size(), g.mesh.triangle_count());
+  EXPECT_EQ(g.mesh.triangle_count() % 2, 0u);
+  size_t stroke = 0;
+  for (size_t t = 0; t < g.mesh.triangle_count(); ++t) {
+    const uint32_t* idx = &g.mesh.indices[3 * t];
+    while (g.first_vertex[stroke + 1] <= idx[0]) ++stroke;
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_GE(idx[k], g.first_vertex[stroke]) << t;
+      ASSERT_LT(idx[k], g.first_vertex[stroke + 1]) << t;
+    }
+  }
+  for (size_t i = 0; i < 300; ++i) {
+    const uint32_t n = g.first_vertex[i + 1] - g.first_vertex[i];
+    // At least two rows; at most segments + 1 rows of kMaxColumns + 1.
+    EXPECT_TRUE(n % 2 == 0 || n % 3 == 0 || n % 5 == 0) << n;
+    EXPECT_GE(n, 4u);
+    EXPECT_LE(n, 6u * (kMaxColumns + 1));
+  }
 }
 
 TEST(StrokeMesh, SameSeedGivesBitIdenticalMeshAtAnyThreadCount) {
   const StrokeSurface sphere = surface_of(testing::test_sphere());
   const StrokeSurface box = surface_of(testing::test_box());
-  // Enough strokes for several parallel chunks.
+  // Enough strokes for several parallel blocks (placement, growth and meshing).
   const StrokeEmitterDesc e = test_emitter(5000, 21);
   // Placement and meshing run in the caller's arena: a budget's run() caps their threads.
-  const auto build_on = [&](int threads) { return ThreadBudget(threads).run([&] { return build(sphere, e); }); };
-  const StrokeGeometry one = build_on(1), two = build_on(2), four = build_on(4);
-  EXPECT_TRUE(same_mesh(one.mesh, two.mesh));
-  EXPECT_TRUE(same_mesh(one.mesh, four.mesh));
-  EXPECT_EQ(one.max_lift, four.max_lift);
-  EXPECT_TRUE(same_mesh(build(box, test_emitter(800, 3)).mesh, build(box, test_emitter(800, 3)).mesh));
-  EXPECT_FALSE(same_mesh(build(sphere, test_emitter(800, 3)).mesh, build(sphere, test_emitter(800, 4)).mesh));
+  const auto build_on = [&](const StrokeSurface& s, const StrokeEmitterDesc& d, int threads) {
+    return ThreadBudget(threads).run([&] { return build_test_strokes(s, d); });
+  };
+  for (const StrokeSurface* surface : {&sphere, &box}) {
+    const StrokeGeometry one = build_on(*surface, e, 1), two = build_on(*surface, e, 2),
+                         four = build_on(*surface, e, 4);
+    EXPECT_TRUE(same_mesh(one.mesh, two.mesh));
+    EXPECT_TRUE(same_mesh(one.mesh, four.mesh));
+    EXPECT_TRUE(same_alpha(one, two));
+    EXPECT_TRUE(same_alpha(one, four));
+    EXPECT_EQ(one.max_lift, four.max_lift);
+  }
+  EXPECT_FALSE(same_mesh(build_test_strokes(sphere, test_emitter(800, 3)).mesh,
+                         build_test_strokes(sphere, test_emitter(800, 4)).mesh));
 }
 
 TEST(StrokeMesh, EveryVertexIsAboveTheSphereWithinMaxLift) {
@@ -63,7 +96,7 @@ TEST(StrokeMesh, EveryVertexIsAboveTheSphereWithinMaxLift) {
   e.length_min = 1.f;
   e.length_max = 2.f;
   e.segments = 4;
-  const StrokeGeometry g = build(surface_of(s), e);
+  const StrokeGeometry g = build_test_strokes(surface_of(s), e);
   ASSERT_GT(g.offset, 0.f);
   for (size_t v = 0; v < g.mesh.vertex_count(); ++v) {
     const double height = glm::length(glm::dvec3(g.mesh.positions[v]) - glm::dvec3(center)) - double(s.radius);
@@ -88,7 +121,7 @@ TEST(StrokeMesh, EveryVertexIsOutsideTheBoxWithinMaxLift) {
   e.width_max = 0.2f;
   e.length_min = 0.4f;
   e.length_max = 0.8f;
-  const StrokeGeometry g = build(surface_of(testing::test_box()), e);
+  const StrokeGeometry g = build_test_strokes(surface_of(testing::test_box()), e);
   for (size_t v = 0; v < g.mesh.vertex_count(); ++v) {
     const Vec3 q = glm::abs(g.mesh.positions[v] - center) - half;
     const float outside = glm::length(glm::max(q, Vec3(0.f)));
@@ -102,11 +135,24 @@ TEST(StrokeMesh, EveryVertexIsOutsideTheBoxWithinMaxLift) {
 TEST(StrokeMesh, UvRunsAcrossAndAlongEachStroke) {
   StrokeEmitterDesc e = test_emitter(50);
   e.segments = 4;
-  const StrokeGeometry g = build(surface_of(testing::test_sphere()), e);
-  for (size_t v = 0; v < g.mesh.vertex_count(); ++v) {
-    const size_t k = v % 10;  // vertex within its stroke
-    EXPECT_EQ(g.mesh.uvs[v].x, float(k % 2));
-    EXPECT_EQ(g.mesh.uvs[v].y, float(k / 2) / 4.f);
+  const StrokeGeometry g = build_test_strokes(surface_of(testing::test_sphere()), e);
+  for (size_t i = 0; i < 50; ++i) {
+    const uint32_t first = g.first_vertex[i], n = g.first_vertex[i + 1] - first;
+    // The row width is where v first changes.
+    uint32_t per = 1;
+    while (per < n && g.mesh.uvs[first + per].y == g.mesh.uvs[first].y) ++per;
+    ASSERT_EQ(n % per, 0u);
+    // A whole stroke on a sphere: v from 0 at the tail to 1 at the tip, rising;
+    // u from 0 to 1 across every row in equal steps.
+    EXPECT_EQ(g.mesh.uvs[first].y, 0.f);
+    EXPECT_EQ(g.mesh.uvs[first + n - 1].y, 1.f);
+    for (uint32_t k = 0; k < n; ++k) {
+      const Vec2 uv = g.mesh.uvs[first + k];
+      EXPECT_FLOAT_EQ(uv.x, float(k % per) / float(per - 1));
+      if (k >= per) {
+        EXPECT_GT(uv.y, g.mesh.uvs[first + k - per].y);
+      }
+    }
   }
 }
 

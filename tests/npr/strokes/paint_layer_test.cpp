@@ -1,0 +1,109 @@
+// Paint (AlphaMask::paint) in the traced scene: overlapping strokes are seen
+// in painting order whatever their heights, shadow rays pass through paint,
+// hits on a mesh traced as quads name the right triangle, and rays leaving a
+// paint hit start clear of the layer.
+#include "core/geometry/embree_scene.h"
+
+#include <gtest/gtest.h>
+
+namespace inkray {
+namespace {
+
+constexpr float kLayer = 0.003f;
+
+// Two opaque paint quads over a floor at z = 0: quad 0 (painted first) at
+// z = 0.002 over x in [0, 1], quad 1 (painted last) lower, at z = 0.001, over
+// x in [0.5, 1.5]; each quad is the triangles (a, b, a1), (b, b1, a1).
+struct PaintedFloor {
+  EmbreeScene scene;
+  uint32_t floor = 0, paint = 0;
+  PaintedFloor() {
+    std::vector<Point3> p;
+    std::vector<uint32_t> idx;
+    for (const auto& [x0, z] : {std::pair{0.f, 0.002f}, std::pair{0.5f, 0.001f}}) {
+      const uint32_t a = uint32_t(p.size());
+      p.insert(p.end(), {{x0, 0.f, z}, {x0 + 1.f, 0.f, z}, {x0, 1.f, z}, {x0 + 1.f, 1.f, z}});
+      idx.insert(idx.end(), {a, a + 1, a + 2, a + 1, a + 3, a + 2});
+    }
+    TriangleMesh mesh = make_mesh(p, {}, {}, idx, Transform{});
+    auto mask = std::make_shared<AlphaMask>();
+    mask->width = mask->height = 1;
+    mask->texels = {255};
+    mask->triangles.resize(4);
+    mask->paint = true;
+    mask->quads = true;
+    mask->layer_thickness = kLayer;
+    floor = scene.add(make_quad(Point3(-1.f, -1.f, 0.f), {4.f, 0.f, 0.f}, {0.f, 3.f, 0.f}, Transform{}));
+    paint = scene.add(std::move(mesh), std::move(mask));
+    scene.commit();
+  }
+  const TriangleMesh& mesh() const { return std::get<TriangleMesh>(scene.shape(paint)); }
+};
+
+Point3 on_triangle(const TriangleMesh& m, const Hit& hit) {
+  const uint32_t* i = &m.indices[3 * hit.prim];
+  const float b1 = hit.barycentric.x, b2 = hit.barycentric.y;
+  return (1.f - b1 - b2) * m.positions[i[0]] + b1 * m.positions[i[1]] + b2 * m.positions[i[2]];
+}
+
+TEST(StrokePaintLayer, TheLastPaintedIsSeenWhateverItsHeight) {
+  const PaintedFloor f;
+  for (float x : {0.55f, 0.7f, 0.95f}) {
+    for (float y : {0.1f, 0.5f, 0.9f}) {
+      const Ray ray{{x, y, 1.f}, {0.f, 0.f, -1.f}};
+      Hit hit;
+      ASSERT_TRUE(f.scene.intersect(ray, kInfinity, &hit));
+      EXPECT_EQ(hit.geometry, f.paint);
+      EXPECT_GE(hit.prim, 2u) << "quad 0 lies higher, but quad 1 was painted over it";
+      // The hit's triangle and barycentrics name the point the ray reached.
+      const Point3 p = on_triangle(f.mesh(), hit);
+      EXPECT_NEAR(glm::distance(p, ray.o + hit.t * ray.d), 0.f, 1e-5f);
+      EXPECT_NEAR(p.z, 0.001f, 1e-6f);
+    }
+  }
+  Hit hit;
+  ASSERT_TRUE(f.scene.intersect(Ray{{0.2f, 0.3f, 1.f}, {0.f, 0.f, -1.f}}, kInfinity, &hit));
+  EXPECT_LT(hit.prim, 2u);
+  ASSERT_TRUE(f.scene.intersect(Ray{{-0.5f, 0.3f, 1.f}, {0.f, 0.f, -1.f}}, kInfinity, &hit));
+  EXPECT_EQ(hit.geometry, f.floor);
+}
+
+TEST(StrokePaintLayer, QuadHitsNameBothHalves) {
+  const PaintedFloor f;
+  int halves[2] = {0, 0};
+  for (int i = 0; i < 64; ++i) {
+    const Ray ray{{0.05f + 0.4f * float(i % 8) / 8.f, 0.05f + float(i / 8) / 8.f, 1.f}, {0.f, 0.f, -1.f}};
+    Hit hit;
+    ASSERT_TRUE(f.scene.intersect(ray, kInfinity, &hit));
+    ASSERT_LT(hit.prim, 2u);
+    ++halves[hit.prim];
+    EXPECT_NEAR(glm::distance(on_triangle(f.mesh(), hit), ray.o + hit.t * ray.d), 0.f, 1e-5f);
+  }
+  EXPECT_GT(halves[0], 0);
+  EXPECT_GT(halves[1], 0);
+}
+
+TEST(StrokePaintLayer, ShadowRaysPassThroughPaint) {
+  const PaintedFloor f;
+  // From above to just over the floor, through both quads: paint casts no shadow.
+  EXPECT_FALSE(f.scene.occluded(Ray{{0.7f, 0.5f, 1.f}, {0.f, 0.f, -1.f}}, 0.9995f));
+  // The floor still does.
+  EXPECT_TRUE(f.scene.occluded(Ray{{0.7f, 0.5f, 1.f}, {0.f, 0.f, -1.f}}, 1.5f));
+}
+
+TEST(StrokePaintLayer, RaysLeavingPaintStartAboveTheLayer) {
+  const PaintedFloor f;
+  const Ray ray{{0.7f, 0.5f, 1.f}, {0.f, 0.f, -1.f}};
+  Hit hit;
+  ASSERT_TRUE(f.scene.intersect(ray, kInfinity, &hit));
+  const SurfaceInteraction si = f.scene.interaction(ray, hit);
+  EXPECT_GE(si.p.z, 0.001f + kLayer * 0.999f);
+  EXPECT_GT(si.ng.z, 0.f);
+  // Straight up and along the layer, nothing is in the way.
+  Hit next;
+  EXPECT_FALSE(f.scene.intersect(Ray{si.p, {0.f, 0.f, 1.f}}, kInfinity, &next));
+  EXPECT_FALSE(f.scene.intersect(Ray{si.p, glm::normalize(Vec3(1.f, 0.f, 0.05f))}, kInfinity, &next));
+}
+
+}  // namespace
+}  // namespace inkray
