@@ -38,9 +38,11 @@ SurfaceOverrides shader_overrides(const ShaderProgram& program, const ShadingPoi
 
 // The order of each closure kind's valued inputs, as the graph compiler stores
 // them in ClosureLeaf::inputs: the names of the description's parameter list that
-// are sockets. Checked against material_desc.h by tests/materials/shader_eval_test.
-inline constexpr std::array<std::string_view, 12> kToonClosureInputs = {
-    "color",        "shadow_color", "threshold", "softness",  "ramp_near",  "ramp_far",
-    "specular_color", "specular_size", "shininess", "rim_color", "rim_width", "rim_threshold"};
+// are sockets (settings such as `bands` or `environment_shadows` are not: they come
+// with the leaf's template). Checked against material_desc.h by
+// tests/materials/shader_nodes_test.cpp.
+inline constexpr std::array<std::string_view, 13> kToonClosureInputs = {
+    "color",          "shadow_color",  "threshold", "softness",  "ramp_near", "ramp_far",     "specular_color",
+    "specular_size", "shininess", "rim_color", "rim_width", "rim_threshold", "environment"};
 
 }  // namespace inkray

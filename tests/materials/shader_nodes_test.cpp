@@ -368,5 +368,42 @@ TEST(ShaderNodes, NoSurfaceIsNoMaterial) {
   EXPECT_FALSE(pick_closure(*c.program, r, 0.5f, scratch).material);
 }
 
+// The toon closure's sockets, in the order materialise() reads them, are its
+// description's valued parameters.
+TEST(ShaderNodes, ToonClosureInputsFollowTheParameterList) {
+  std::vector<std::string_view> sockets;
+  for (const SocketInfo& s : node_inputs_of<ToonDesc>())
+    if (s.has_value) sockets.push_back(s.name);
+  EXPECT_EQ(sockets, std::vector<std::string_view>(kToonClosureInputs.begin(), kToonClosureInputs.end()));
+}
+
+// A toon node's environment weight is a socket, its environment shadows a setting
+// on the node: both reach the material the path tracer shades with, linked or not.
+TEST(ShaderNodes, ToonNodeCarriesTheEnvironmentWeightAndShadows) {
+  ToonDesc toon;
+  toon.environment = 0.6f;
+  toon.environment_shadows = true;
+  for (const bool linked : {false, true}) {
+    GraphDesc g = closure_graph(toon);
+    if (linked) {
+      add(g, "weight", GeometryNode{});
+      link(g, "weight", "depth", "surface", "environment");
+    }
+    const CompiledGraph c = compile(g);
+    ASSERT_TRUE(c.program) << (c.errors.empty() ? "" : c.errors.front());
+    SurfaceInteraction si;
+    const ShadingPoint sp = test_point(si);
+    ShaderRegisters r;
+    run_shader(*c.program, sp, r);
+    Material scratch;
+    const ResolvedMaterial picked = pick_closure(*c.program, r, 0.5f, scratch);
+    ASSERT_TRUE(picked.material);
+    const auto* m = std::get_if<ToonMaterial>(picked.material);
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->environment, linked ? sp.depth : 0.6f) << linked;
+    EXPECT_TRUE(m->environment_shadows) << linked;
+  }
+}
+
 }  // namespace
 }  // namespace inkray
