@@ -89,19 +89,10 @@ float sample_width_px(const RenderScene& scene, const LineSetup& setup, const Ca
   return width;
 }
 
-// One sample's stencil: its radius, and what a ray at each reach adds per type.
-struct Stencil {
-  float radius = 0.f;                         // pixels
-  std::array<float, kLineTypeCount> reach{};  // a type's disc radius, pixels (0: not drawn here)
-  std::array<float, kLineTypeCount> weight{};
-};
-
-// Types of different widths share one stencil: it spans the widest, and a
-// point that falls inside a narrower type's disc is a uniform point of that
-// disc, so counting it with weight (R / r)^2 keeps every type's coverage
-// unbiased. Types narrower than kMinLineWidthPx use a disc that wide and weigh
-// their rays by how much narrower they are; the ink-preserving gain (line_gain.h)
-// scales each type for the film's pixel size.
+// The stencil at a sample's width (Stencil, line_detector.h). Types narrower
+// than kMinLineWidthPx use a disc that wide and weigh their rays by how much
+// narrower they are; the ink-preserving gain (line_gain.h) scales each type for
+// the film's pixel size.
 Stencil make_stencil(const LineSetup& setup, float width_px) {
   Stencil st;
   for (int t = 0; t < kLineTypeCount; ++t) {
@@ -116,9 +107,7 @@ Stencil make_stencil(const LineSetup& setup, float width_px) {
     if (r <= 0.f) continue;
     const float w = width_px * setup.width[size_t(t)];
     const float fade = std::min(w / kMinLineWidthPx, 1.f);
-    const float gain = width_px == setup.width_px ? setup.gain_at_width[size_t(t)]
-                                                  : ink_preserving_gain(setup.film_pixel / r);
-    st.weight[size_t(t)] = sqr(st.radius / r) * fade * gain / kLineGain;
+    st.weight[size_t(t)] = sqr(st.radius / r) * fade * ink_preserving_gain(setup.film_pixel / r) / kLineGain;
   }
   return st;
 }
@@ -165,10 +154,7 @@ LineSetup make_line_setup(const RenderScene& scene, int divisor) {
   const float footprint = rs.filter == PixelFilter::box ? 2.f * rs.filter_radius : rs.filter_radius / 3.f * std::sqrt(12.f);
   s.film_pixel = std::max(footprint, 1e-3f) * float(std::max(divisor, 1));
   s.max_blur = kIncoherentSpread * s.nominal_radius_px * s.pixel_angle;
-  for (int t = 0; t < kLineTypeCount; ++t) {
-    const float drawn = std::max(s.width_px * s.width[size_t(t)], kMinLineWidthPx);
-    s.gain_at_width[size_t(t)] = ink_preserving_gain(s.film_pixel / (drawn * kStencilRadiusPerWidth));
-  }
+  s.at_width = make_stencil(s, s.width_px);
   return s;
 }
 
@@ -180,7 +166,8 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
   if (draw.count <= 0) return out;
   const PerceivedSurface centre = find_perceived_surface(scene, centre_ray, u_mix, setup.max_blur, rays, &primary);
   if (centre.lost || (centre.hit && scene.objects[centre.object].lines.exclude)) return out;
-  const Stencil stencil = make_stencil(setup, sample_width_px(scene, setup, camera, centre, centre_ray.d));
+  const float width_px = sample_width_px(scene, setup, camera, centre, centre_ray.d);
+  const Stencil stencil = width_px == setup.width_px ? setup.at_width : make_stencil(setup, width_px);
   if (stencil.radius <= 0.f) return out;
   const float stencil_angle = stencil.radius * setup.pixel_angle;
   const Vec3 centre_dir = glm::normalize(centre_ray.d);
@@ -190,8 +177,9 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
   // otherwise pass for an occlusion.
   const float occlusion_jump = std::max(kMinOcclusionJump, 2.f * stencil_angle);
 
+  const Sampler pixel(draw.x, draw.y, draw.first, draw.seed);
   for (int k = 0; k < draw.count; ++k) {
-    const Vec2 u = Sampler(draw.x, draw.y, draw.first + uint32_t(k), draw.seed).get_pair(kOutlinePairBlock);
+    const Vec2 u = pixel.get_pair_at(draw.first + uint32_t(k), kOutlinePairBlock);
     const Vec2 offset = stencil.radius * sample_uniform_disk_concentric(u);
     const float reach = glm::length(offset);
     uint32_t wanted = 0;

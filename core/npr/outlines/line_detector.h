@@ -18,6 +18,16 @@ namespace inkray {
 // samples only, which shows as isolated dots rather than a faint line.
 inline constexpr float kMinLineWidthPx = 1.f;
 
+// One sample's stencil: its radius, and what a ray at each reach adds per type.
+// Types of different widths share one stencil: it spans the widest, and a point
+// that falls inside a narrower type's disc is a uniform point of that disc, so
+// counting it with weight (R / r)^2 keeps every type's coverage unbiased.
+struct Stencil {
+  float radius = 0.f;                         // pixels
+  std::array<float, kLineTypeCount> reach{};  // a type's disc radius, pixels (0: not drawn here)
+  std::array<float, kLineTypeCount> weight{};
+};
+
 // What a scene's outline settings mean for every sample, worked out once per scene.
 struct LineSetup {
   bool active = false;                      // any line type enabled with a width above 0
@@ -35,9 +45,9 @@ struct LineSetup {
   float pixel_angle = 0.f;     // radians per pixel of the full image at its centre
   float film_pixel = 1.f;      // width of a film pixel's sample footprint, in full-image pixels
   float max_blur = 0.f;        // roughness blur, radians, beyond which mirrors and glass are not followed
-  // Per-type ink-preserving gains (line_gain.h) for samples at width_px, the
-  // usual case: only world widths, falloff and width overrides need their own.
-  std::array<float, kLineTypeCount> gain_at_width{};
+  // The stencil of samples at width_px, the usual case: only world widths,
+  // falloff and width overrides make their own.
+  Stencil at_width;
 };
 
 // `divisor`: the film has one pixel per divisor x divisor image pixels (an

@@ -13,19 +13,24 @@ namespace {
 // more, and one inside a solid line.
 constexpr float kQuietRate = 1.f / 16.f;
 constexpr float kSolidRate = 1.f / 4.f;
-constexpr float kBesideRate = 1.f / 2.f;
+constexpr float kBesideRate = 1.f / 4.f;
 // A pixel counts as solid once its opacity, less two standard errors, stays
 // above full opacity by this margin.
 constexpr float kSolidMargin = 0.25f;
 constexpr uint32_t kMinSolidRays = 16;
 // Rays per sample on a line's edge: `quality` for each this many pixels of
-// stencil radius, so wide lines' long soft edges converge as fast as thin ones'.
+// stencil radius (rounded, at least one), so wide lines' long soft edges
+// converge as fast as thin ones' while lines a few pixels wide trace no more
+// than full sampling would.
 constexpr float kEdgeRadiusPerRay = 2.f;
 constexpr int kMaxEdgeMultiple = 8;
 constexpr int kMaxRays = 64;
 
+// Two rounds of the mixer over the packed keys: decorrelated enough to pick
+// samples, and cheap, since every sample of every pixel asks.
 bool draws(float rate, uint32_t x, uint32_t y, uint32_t pass, uint32_t seed) {
-  return u32_to_unit_float(hash_combine(hash_combine(x, y, pass), seed, 0x11e5u)) < rate;
+  const uint32_t pixel = hash_u32(x ^ (y << 16) ^ (y >> 16) ^ (seed * 0x9e3779b9u));
+  return u32_to_unit_float(hash_u32(pixel + pass * 0x85ebca6bu + 0x11e5u)) < rate;
 }
 
 }  // namespace
@@ -80,7 +85,7 @@ int stencil_rays(const LineSetup& setup, const LineSample& sum, uint32_t samples
     if (solid - 2.f * kLineGain * scale * standard_error >= 1.f + kSolidMargin)
       return draws(kSolidRate, x, y, pass, seed) ? quality : 0;
   }
-  const int multiple = std::clamp(int(std::ceil(setup.nominal_radius_px / kEdgeRadiusPerRay)), 1, kMaxEdgeMultiple);
+  const int multiple = std::clamp(int(std::lround(setup.nominal_radius_px / kEdgeRadiusPerRay)), 1, kMaxEdgeMultiple);
   return std::min(quality * multiple, kMaxRays);
 }
 

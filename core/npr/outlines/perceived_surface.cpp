@@ -54,33 +54,39 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
   PerceivedSurface out;
   const bool follow = scene.outlines.in_reflections;
   for (int chain = 0; chain <= kMaxPerceivedChain; ++chain) {
-    SurfaceInteraction si;
+    // The centre ray's hit is the camera sample's own; other rays trace theirs.
+    SurfaceInteraction traced;
+    const SurfaceInteraction* hit_si = &traced;
     float length = 0.f;
     if (chain == 0 && first) {
       if (!first->hit) return out;
-      si = first->si;
+      hit_si = &first->si;
       length = first->distance;
     } else {
       Hit hit;
       ++*rays;
       if (!scene.geometry.intersect(ray, kInfinity, &hit)) return out;
-      si = scene.geometry.interaction(ray, hit);
+      traced = scene.geometry.interaction(ray, hit);
       length = hit.t * glm::length(ray.d);
     }
+    const SurfaceInteraction& si = *hit_si;
     const RenderObject& object = scene.objects[si.object];
     const Vec3 wo = -glm::normalize(ray.d);
     const uint32_t index = object.material;
     const Material* material = &scene.materials[index];
-    Material scratch;
-    const ShadingPoint sp = scene_shading_point(scene, si, wo, out.distance + length);
     const auto* graph = std::get_if<GraphMaterial>(material);
+    // Most hits are on plain materials, which need no shading point: it is
+    // built only for mixes and graphs, which read it.
+    const float depth = out.distance + length;
+    std::optional<Material> scratch;
     // A graph whose surfaces are all opaque to lines is what is seen, whatever it computes.
     if (material_flags(*material).resolves && !(graph && !graph->program->lines_pass_through)) {
       // Lines do not gather light: a graph reading it sees a fully lit surface.
-      material = resolve_material(scene.materials, index, sp, u_mix, scratch).material;
+      material = resolve_material(scene.materials, index, scene_shading_point(scene, si, wo, depth), u_mix,
+                                  scratch.emplace()).material;
       if (!material) return out;
     }
-    out.distance += length;
+    out.distance = depth;
 
     std::optional<Continuation> next;
     if (follow && !object.lines.stop_lines) {
@@ -102,7 +108,8 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
       out.ng = flip ? -si.ng : si.ng;
       out.ns = flip ? -si.ns : si.ns;
       if (std::holds_alternative<GraphMaterial>(scene.materials[index])) {
-        const SurfaceOverrides o = material_overrides(scene.materials, index, sp, u_mix);
+        const SurfaceOverrides o =
+            material_overrides(scene.materials, index, scene_shading_point(scene, si, wo, depth), u_mix);
         out.line_color = o.line_color;
         out.line_width = o.line_width.value_or(1.f);
       }
