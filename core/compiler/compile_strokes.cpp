@@ -39,13 +39,14 @@ struct BuiltStrokes {
   bool stand_in = false;  // its brush image could not be read: painted in the stand-in checker
 };
 
-// Everything a StrokeShape depends on: the emitter without its name and colour jitter,
-// and the brush image's stamp (an image changed on disk, or found, is a new brush).
+// Everything a StrokeShape depends on: the emitter without its name, colour jitter and
+// visibility, and the brush image's stamp (an image changed on disk, or found, is a new brush).
 std::string shape_key(const SceneDesc& desc, const StrokeEmitterDesc& e, const std::string& object_key,
                       bool stand_in) {
   StrokeEmitterDesc shape_only = e;
   shape_only.name.clear();
   shape_only.hue_jitter = shape_only.saturation_jitter = shape_only.value_jitter = 0.f;
+  shape_only.indirect = false;  // where the instance is seen, not what it is
   std::string brush;
   if (e.brush == BrushKind::image) brush = file_stamp(desc.base_dir / e.brush_image).value_or("missing");
   if (stand_in) brush += "|stand-in";
@@ -183,7 +184,7 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
     }
     // The painted mesh is what hits read (its vertex colours); the ribbons' BVH
     // traces it, unchanged by a repaint. Strokes lie where they grew: in world space.
-    scene.geometry.add(b.shape->bvh, Transform{}, painted);
+    scene.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect);
   }
 }
 

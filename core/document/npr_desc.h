@@ -99,6 +99,7 @@ struct StrokeEmitterDesc {
   float pressure = 0.7f;    // alpha falloff along the stroke
   int segments = 8;         // ribbon segments along each stroke
   float offset = 0.f;       // lift above the surface, world units; 0 picks one from the object's size
+  bool indirect = false;    // light bouncing off diffuse and glossy surfaces sees the strokes
   bool operator==(const StrokeEmitterDesc&) const = default;
 };
 template <class V> void visit_params(StrokeEmitterDesc& d, V& v) {
@@ -121,6 +122,7 @@ template <class V> void visit_params(StrokeEmitterDesc& d, V& v) {
   v(number("pressure", 0, 1, "Alpha falloff along the stroke"), d.pressure);
   v(integer("segments", 1, 64, "Most ribbon segments along each stroke; fewer where the surface is flat"), d.segments);
   v(number("offset", 0, 1e6, "Lift above the surface; 0 picks one from the object's size").log_slider(0.001, 1).labelled("Lift"), d.offset);
+  v(toggle("indirect", "Light bouncing off diffuse and glossy surfaces sees the strokes; off, it sees the object under them (faster)").labelled("In bounce light"), d.indirect);
 }
 
 // ---------------------------------------------------------------- painterly pixel filter

@@ -99,6 +99,10 @@ struct PaintHit {
 struct QueryContext {
   RTCIntersectContext rtc;
   PaintHit* paint = nullptr;
+  // The instance whose BVH a paint-order query asks directly (Embree names no
+  // instance then), or kNoInstance when it asks the top level.
+  uint32_t instance = kNoInstance;
+  static constexpr uint32_t kNoInstance = ~0u;
 };
 
 // The triangle and its barycentrics at (u, v) of quad q (AlphaMask::quads):
@@ -129,7 +133,8 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
   if (paint) {
     // Resolving paint order: only paint painted after the best so far matters,
     // and every hit is refused so the query looks on.
-    const uint32_t instance = args->context->instID[0];
+    const uint32_t direct = reinterpret_cast<const QueryContext*>(args->context)->instance;
+    const uint32_t instance = direct != QueryContext::kNoInstance ? direct : args->context->instID[0];
     args->valid[0] = 0;
     if (instance < paint->instance || (instance == paint->instance && prim <= paint->prim)) return;
     if (alpha_accepts(mesh, *bvh->mask(), args, prim, b1, b2))
@@ -139,11 +144,13 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
   if (!alpha_accepts(mesh, *bvh->mask(), args, prim, b1, b2)) args->valid[0] = 0;
 }
 
-// Instance masks: every shape but paint is kSolid, paint is kPaint. Shadow
-// rays see only kSolid (paint casts no shadow); closest-hit rays see both;
-// the query resolving paint order sees only kPaint.
+// Instance masks: every shape but paint is kSolid, paint is kPaint, and also
+// kPaintIndirect unless hidden from indirect rays. Shadow rays see only kSolid
+// (paint casts no shadow); camera rays kSolid | kPaint, indirect rays kSolid |
+// kPaintIndirect; the query resolving paint order sees the ray's paint bit only.
 constexpr unsigned kSolid = 1u << 0;
 constexpr unsigned kPaint = 1u << 1;
+constexpr unsigned kPaintIndirect = 1u << 2;
 
 // Bytes Embree holds on the shared device (BVHs and their build scratch), from
 // its memory monitor.
@@ -342,9 +349,9 @@ uint32_t EmbreeScene::add(TriangleMesh mesh, std::shared_ptr<const AlphaMask> ma
 }
 
 uint32_t EmbreeScene::add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
-                          std::shared_ptr<const Shape> world) {
+                          std::shared_ptr<const Shape> world, bool indirect) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::add after commit");
-  impl_->instances.push_back({std::move(bvh), to_world, std::move(world)});
+  impl_->instances.push_back({std::move(bvh), to_world, std::move(world), indirect});
   return uint32_t(impl_->instances.size() - 1);
 }
 
@@ -362,11 +369,18 @@ void EmbreeScene::commit() {
     const std::array<float, 12> xfm = embree_transform(instance.to_world);
     rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
     const AlphaMask* mask = instance.bvh->mask();
-    rtcSetGeometryMask(geom, mask && mask->paint ? kPaint : kSolid);
+    const bool paint = mask && mask->paint;
+    rtcSetGeometryMask(geom, !paint ? kSolid : instance.indirect ? kPaint | kPaintIndirect : kPaint);
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl_->scene, geom, id);
     rtcReleaseGeometry(geom);
+    if (paint) {
+      impl_->camera_paint.push_back(id);
+      if (instance.indirect) impl_->indirect_paint.push_back(id);
+    }
   }
+  impl_->direct_paint = std::all_of(impl_->camera_paint.begin(), impl_->camera_paint.end(),
+                                    [&](uint32_t id) { return impl_->instances[id].to_world.is_identity(); });
   rtcCommitScene(impl_->scene);
   impl_->committed = true;
 }
@@ -376,17 +390,19 @@ bool EmbreeScene::same_instances(const EmbreeScene& other) const {
   const auto& b = other.impl_->instances;
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
-    if (a[i].bvh != b[i].bvh || a[i].world != b[i].world || a[i].to_world.m != b[i].to_world.m) return false;
+    if (a[i].bvh != b[i].bvh || a[i].world != b[i].world || a[i].to_world.m != b[i].to_world.m ||
+        a[i].indirect != b[i].indirect)
+      return false;
   return true;
 }
 
-bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit) const {
+bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind) const {
   QueryContext context;
   rtcInitIntersectContext(&context.rtc);
   if (!traceable(ray, t_max)) return false;
   RTCRayHit rh{};
   rh.ray = to_rtc(ray, t_max);
-  rh.ray.mask = kSolid | kPaint;
+  rh.ray.mask = kSolid | (kind == RayKind::camera ? kPaint : kPaintIndirect);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(impl_->scene, &context.rtc, &rh);
@@ -399,11 +415,12 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit) const {
   if (bvh.traced_as_quads())
     quad_to_triangle(rh.hit.primID, rh.hit.u, rh.hit.v, &hit->prim, &hit->barycentric.x, &hit->barycentric.y);
   const AlphaMask* mask = bvh.mask();
-  if (mask && mask->paint) resolve_paint(ray, *mask, Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), hit);
+  if (mask && mask->paint) resolve_paint(ray, *mask, Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), kind, hit);
   return true;
 }
 
-void EmbreeScene::resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, Hit* hit) const {
+void EmbreeScene::resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, RayKind kind,
+                                Hit* hit) const {
   // Other paint under the hit lies within the layer's thickness of it, which
   // the ray crosses over this distance (capped at grazing angles, where the
   // layer would reach across the object). Paint nearer than the hit was refused
@@ -420,10 +437,19 @@ void EmbreeScene::resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec
   RTCRayHit rh{};
   rh.ray = to_rtc(ray, hit->t + reach);
   rh.ray.tnear = hit->t * (1.f - 1e-5f);
-  rh.ray.mask = kPaint;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->scene, &context.rtc, &rh);
+  if (impl_->direct_paint) {
+    // Each paint BVH on its own: no top level and no instance to enter, which
+    // cost this short query as much as the paint it crosses.
+    for (const uint32_t id : kind == RayKind::camera ? impl_->camera_paint : impl_->indirect_paint) {
+      context.instance = id;
+      rtcIntersect1(impl_->instances[id].bvh->embree_scene(), &context.rtc, &rh);
+    }
+  } else {
+    rh.ray.mask = kind == RayKind::camera ? kPaint : kPaintIndirect;
+    rtcIntersect1(impl_->scene, &context.rtc, &rh);
+  }
   *hit = {top.t, top.instance, top.prim, {top.u, top.v}};
 }
 

@@ -25,6 +25,11 @@ struct Hit {
 
 using Shape = std::variant<TriangleMesh, Sphere>;
 
+// What a closest-hit ray gathers: what the camera sees, directly or through
+// mirrors and glass (every shape), or light after a diffuse or glossy bounce
+// (paint hidden from it is skipped: the surface under it stands in).
+enum class RayKind { camera, indirect };
+
 // One shape in its own Embree scene (a bottom-level BVH), in the space it was
 // built in. Immutable once made: compiled scenes share it, each placing it with
 // an instance, so moving an object rebuilds none of it (docs/architecture.md,
@@ -80,15 +85,17 @@ class EmbreeScene {
   // space, which hits, lights and strokes read: for a mesh, its vertices transformed
   // by to_world (the barycentrics of a hit are the same in both); the BVH's own
   // shape when to_world is the identity.
+  // `indirect` false hides paint (AlphaMask::paint) from RayKind::indirect rays;
+  // other shapes are seen by every ray.
   uint32_t add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
-               std::shared_ptr<const Shape> world);
+               std::shared_ptr<const Shape> world, bool indirect = true);
   void commit();
   // Whether `other` places the same BVHs, by the same transforms, with the same
   // world shapes: then its committed top level can stand for this one.
   bool same_instances(const EmbreeScene& other) const;
 
   // The closest hit; where it is on paint, the paint painted last there.
-  bool intersect(const Ray& ray, float t_max, Hit* hit) const;
+  bool intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind = RayKind::camera) const;
   bool occluded(const Ray& ray, float t_max) const;
   SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
 
@@ -105,16 +112,22 @@ class EmbreeScene {
     std::shared_ptr<const ShapeBvh> bvh;
     Transform to_world;
     std::shared_ptr<const Shape> world;
+    bool indirect = true;  // RayKind::indirect rays see it
   };
   struct Impl {
     std::vector<Instance> instances;
+    // Paint seen by camera rays, and by indirect rays, in instance order, when
+    // every paint instance is placed by the identity (strokes are built in world
+    // space): the paint-order query then asks their BVHs directly.
+    std::vector<uint32_t> camera_paint, indirect_paint;
+    bool direct_paint = false;
     RTCSceneTy* scene = nullptr;
     bool committed = false;
     ~Impl();
   };
   // Replaces a hit on paint by the last-painted paint the ray passes through
   // there (AlphaMask::paint).
-  void resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, Hit* hit) const;
+  void resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, RayKind kind, Hit* hit) const;
 
   std::shared_ptr<Impl> impl_;
 };

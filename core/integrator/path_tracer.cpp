@@ -174,7 +174,9 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
   for (int depth = 0;; ++depth) {
     Hit hit;
     ++result.rays;
-    if (!scene.geometry.intersect(st.ray, kInfinity, &hit)) {
+    // After a diffuse or glossy bounce the ray gathers indirect light, which may skip paint.
+    if (!scene.geometry.intersect(st.ray, kInfinity, &hit,
+                                  st.specular_chain ? RayKind::camera : RayKind::indirect)) {
       add_escaped(scene, st, result);
       break;
     }

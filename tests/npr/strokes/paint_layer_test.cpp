@@ -1,7 +1,8 @@
 // Paint (AlphaMask::paint) in the traced scene: overlapping strokes are seen
 // in painting order whatever their heights, shadow rays pass through paint,
-// hits on a mesh traced as quads name the right triangle, and rays leaving a
-// paint hit start clear of the layer.
+// hits on a mesh traced as quads name the right triangle, rays leaving a paint
+// hit start clear of the layer, and paint hidden from indirect rays is skipped
+// by them only.
 #include "core/geometry/embree_scene.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +18,8 @@ constexpr float kLayer = 0.003f;
 struct PaintedFloor {
   EmbreeScene scene;
   uint32_t floor = 0, paint = 0;
-  PaintedFloor() {
+  // `indirect` false hides the paint from RayKind::indirect rays.
+  explicit PaintedFloor(bool indirect = true) {
     std::vector<Point3> p;
     std::vector<uint32_t> idx;
     for (const auto& [x0, z] : {std::pair{0.f, 0.002f}, std::pair{0.5f, 0.001f}}) {
@@ -34,7 +36,8 @@ struct PaintedFloor {
     mask->quads = true;
     mask->layer_thickness = kLayer;
     floor = scene.add(make_quad(Point3(-1.f, -1.f, 0.f), {4.f, 0.f, 0.f}, {0.f, 3.f, 0.f}, Transform{}));
-    paint = scene.add(std::move(mesh), std::move(mask));
+    auto world = std::make_shared<const Shape>(std::move(mesh));
+    paint = scene.add(std::make_shared<const ShapeBvh>(world, std::move(mask)), Transform{}, world, indirect);
     scene.commit();
   }
   const TriangleMesh& mesh() const { return std::get<TriangleMesh>(scene.shape(paint)); }
@@ -103,6 +106,66 @@ TEST(StrokePaintLayer, RaysLeavingPaintStartAboveTheLayer) {
   Hit next;
   EXPECT_FALSE(f.scene.intersect(Ray{si.p, {0.f, 0.f, 1.f}}, kInfinity, &next));
   EXPECT_FALSE(f.scene.intersect(Ray{si.p, glm::normalize(Vec3(1.f, 0.f, 0.05f))}, kInfinity, &next));
+}
+
+TEST(StrokePaintLayer, IndirectRaysSkipPaintHiddenFromThemOnly) {
+  for (const bool indirect : {true, false}) {
+    SCOPED_TRACE(indirect ? "seen by indirect rays" : "hidden from indirect rays");
+    const PaintedFloor f(indirect);
+    const Ray ray{{0.7f, 0.5f, 1.f}, {0.f, 0.f, -1.f}};
+    Hit hit;
+    ASSERT_TRUE(f.scene.intersect(ray, kInfinity, &hit, RayKind::camera));
+    EXPECT_EQ(hit.geometry, f.paint);
+    EXPECT_GE(hit.prim, 2u);
+    ASSERT_TRUE(f.scene.intersect(ray, kInfinity, &hit, RayKind::indirect));
+    if (indirect) {
+      EXPECT_EQ(hit.geometry, f.paint);
+      EXPECT_GE(hit.prim, 2u) << "paint order holds for indirect rays too";
+    } else {
+      EXPECT_EQ(hit.geometry, f.floor) << "the surface under the paint stands in for it";
+    }
+    // Shadow rays never see paint.
+    EXPECT_FALSE(f.scene.occluded(ray, 0.9995f));
+  }
+}
+
+// Quad 0 and quad 1 of PaintedFloor as two emitters' paint: the one added later
+// is on top where they overlap, whether the paint-order query asks the paint's
+// BVHs directly (every paint instance placed by the identity) or the top level
+// (one placed by a translation).
+TEST(StrokePaintLayer, PaintAddedLaterIsOnTopAcrossInstances) {
+  for (const bool moved : {false, true}) {
+    SCOPED_TRACE(moved ? "second paint placed by a translation" : "paint in world space");
+    EmbreeScene scene;
+    std::vector<uint32_t> paint;
+    for (const auto& [x0, z] : {std::pair{0.f, 0.002f}, std::pair{0.5f, 0.001f}}) {
+      const float shift = moved && x0 > 0.f ? 0.25f : 0.f;  // the BVH's mesh sits that far to -x
+      const std::vector<Point3> p = {
+          {x0 - shift, 0.f, z}, {x0 + 1.f - shift, 0.f, z}, {x0 - shift, 1.f, z}, {x0 + 1.f - shift, 1.f, z}};
+      auto mask = std::make_shared<AlphaMask>();
+      mask->width = mask->height = 1;
+      mask->texels = {255};
+      mask->triangles.resize(2);
+      mask->paint = true;
+      mask->quads = true;
+      mask->layer_thickness = kLayer;
+      const Transform to_world = Transform::translate({shift, 0.f, 0.f});
+      auto local = std::make_shared<const Shape>(make_mesh(p, {}, {}, {0, 1, 2, 1, 3, 2}, Transform{}));
+      auto world = std::make_shared<const Shape>(make_mesh(p, {}, {}, {0, 1, 2, 1, 3, 2}, to_world));
+      paint.push_back(scene.add(std::make_shared<const ShapeBvh>(local, std::move(mask)), to_world, world));
+    }
+    scene.commit();
+    for (float x : {0.55f, 0.8f, 0.95f}) {
+      Hit hit;
+      const Ray ray{{x, 0.5f, 1.f}, {0.f, 0.f, -1.f}};
+      ASSERT_TRUE(scene.intersect(ray, kInfinity, &hit));
+      EXPECT_EQ(hit.geometry, paint[1]) << "the second paint lies lower but was added later";
+      EXPECT_NEAR(ray.o.z + hit.t * ray.d.z, 0.001f, 1e-6f);
+    }
+    Hit hit;
+    ASSERT_TRUE(scene.intersect(Ray{{0.2f, 0.5f, 1.f}, {0.f, 0.f, -1.f}}, kInfinity, &hit));
+    EXPECT_EQ(hit.geometry, paint[0]);
+  }
 }
 
 }  // namespace
