@@ -92,6 +92,7 @@ bool alpha_accepts(const TriangleMesh& mesh, const AlphaMask& mask, const RTCFil
 struct PaintHit {
   uint32_t instance = 0, prim = 0;
   float t = 0.f, u = 0.f, v = 0.f;
+  bool found = true;  // false: no paint yet, any accepted paint is better
 };
 
 // Every query's context: Embree's, and for a query resolving paint order the
@@ -136,9 +137,10 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
     const uint32_t direct = reinterpret_cast<const QueryContext*>(args->context)->instance;
     const uint32_t instance = direct != QueryContext::kNoInstance ? direct : args->context->instID[0];
     args->valid[0] = 0;
-    if (instance < paint->instance || (instance == paint->instance && prim <= paint->prim)) return;
+    if (paint->found && (instance < paint->instance || (instance == paint->instance && prim <= paint->prim)))
+      return;
     if (alpha_accepts(mesh, *bvh->mask(), args, prim, b1, b2))
-      *paint = {instance, prim, RTCRayN_tfar(args->ray, args->N, 0), b1, b2};
+      *paint = {instance, prim, RTCRayN_tfar(args->ray, args->N, 0), b1, b2, true};
     return;
   }
   if (!alpha_accepts(mesh, *bvh->mask(), args, prim, b1, b2)) args->valid[0] = 0;
@@ -376,11 +378,19 @@ void EmbreeScene::commit() {
     rtcReleaseGeometry(geom);
     if (paint) {
       impl_->camera_paint.push_back(id);
+      impl_->camera_layer = std::max(impl_->camera_layer, mask->layer_thickness);
       if (instance.indirect) impl_->indirect_paint.push_back(id);
     }
   }
   impl_->direct_paint = std::all_of(impl_->camera_paint.begin(), impl_->camera_paint.end(),
                                     [&](uint32_t id) { return impl_->instances[id].to_world.is_identity(); });
+  for (const uint32_t id : impl_->camera_paint) {
+    RTCBounds b;
+    rtcGetSceneBounds(impl_->instances[id].bvh->embree_scene(), &b);
+    const float grow = impl_->instances[id].bvh->mask()->layer_thickness;
+    impl_->camera_paint_bounds.push_back(
+        {Point3(b.lower_x, b.lower_y, b.lower_z) - grow, Point3(b.upper_x, b.upper_y, b.upper_z) + grow});
+  }
   rtcCommitScene(impl_->scene);
   impl_->committed = true;
 }
@@ -402,7 +412,11 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind)
   if (!traceable(ray, t_max)) return false;
   RTCRayHit rh{};
   rh.ray = to_rtc(ray, t_max);
-  rh.ray.mask = kSolid | (kind == RayKind::camera ? kPaint : kPaintIndirect);
+  // Camera rays find the surface first and then the paint on it, which lies
+  // within the layer in front of the hit: the paint BVH, a shell around the
+  // object, is walked over that stretch only, not by every ray passing near it.
+  const bool surface_first = kind == RayKind::camera && impl_->direct_paint && !impl_->camera_paint.empty();
+  rh.ray.mask = surface_first ? kSolid : kSolid | (kind == RayKind::camera ? kPaint : kPaintIndirect);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(impl_->scene, &context.rtc, &rh);
@@ -414,9 +428,52 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind)
   const ShapeBvh& bvh = *impl_->instances[hit->geometry].bvh;
   if (bvh.traced_as_quads())
     quad_to_triangle(rh.hit.primID, rh.hit.u, rh.hit.v, &hit->prim, &hit->barycentric.x, &hit->barycentric.y);
+  const Vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  if (surface_first) {
+    paint_on_surface(ray, ng, hit);
+    return true;
+  }
   const AlphaMask* mask = bvh.mask();
-  if (mask && mask->paint) resolve_paint(ray, *mask, Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), kind, hit);
+  if (mask && mask->paint) resolve_paint(ray, *mask, ng, kind, hit);
   return true;
+}
+
+void EmbreeScene::paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) const {
+  // As in resolve_paint: the layer's thickness over the cosine, capped at
+  // grazing angles. The ray comes from in front of the paint, so the stretch
+  // ends at the surface. Embree reports a mesh's normal in its instance's space
+  // and none for a sphere (a user geometry).
+  // Most surface hits lie outside every painted object's bounds: nothing to ask.
+  const Point3 p = ray.o + hit->t * ray.d;
+  const auto inside = [&](const std::array<Point3, 2>& b) {
+    return p.x >= b[0].x && p.y >= b[0].y && p.z >= b[0].z && p.x <= b[1].x && p.y <= b[1].y && p.z <= b[1].z;
+  };
+  if (std::none_of(impl_->camera_paint_bounds.begin(), impl_->camera_paint_bounds.end(), inside)) return;
+  const Instance& instance = impl_->instances[hit->geometry];
+  Vec3 n = ng;
+  if (const auto* sphere = std::get_if<Sphere>(instance.world.get()))
+    n = sphere->normal_at(p);
+  else if (!instance.to_world.is_identity())
+    n = instance.to_world.normal(ng);
+  const float d_len = glm::length(ray.d), ng_len = glm::length(n);
+  if (!(d_len > 0.f) || !(ng_len > 0.f)) return;
+  const float cos_theta = std::abs(glm::dot(ray.d, n)) / (d_len * ng_len);
+  const float reach = impl_->camera_layer / (std::max(cos_theta, 0.05f) * d_len);
+  QueryContext context;
+  rtcInitIntersectContext(&context.rtc);
+  PaintHit top;
+  top.found = false;
+  context.paint = &top;
+  RTCRayHit rh{};
+  rh.ray = to_rtc(ray, hit->t * (1.f + 1e-5f));
+  rh.ray.tnear = std::max(hit->t - reach, 0.f);
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  for (const uint32_t id : impl_->camera_paint) {
+    context.instance = id;
+    rtcIntersect1(impl_->instances[id].bvh->embree_scene(), &context.rtc, &rh);
+  }
+  if (top.found) *hit = {top.t, top.instance, top.prim, {top.u, top.v}};
 }
 
 void EmbreeScene::resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, RayKind kind,

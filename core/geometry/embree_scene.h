@@ -8,6 +8,7 @@
 #include "core/geometry/sphere.h"
 #include "core/geometry/triangle_mesh.h"
 
+#include <array>
 #include <memory>
 #include <variant>
 #include <vector>
@@ -121,6 +122,8 @@ class EmbreeScene {
     // space): the paint-order query then asks their BVHs directly.
     std::vector<uint32_t> camera_paint, indirect_paint;
     bool direct_paint = false;
+    float camera_layer = 0.f;  // the thickest layer of camera paint
+    std::vector<std::array<Point3, 2>> camera_paint_bounds;  // world bounds of each, grown by its layer
     RTCSceneTy* scene = nullptr;
     bool committed = false;
     ~Impl();
@@ -128,6 +131,9 @@ class EmbreeScene {
   // Replaces a hit on paint by the last-painted paint the ray passes through
   // there (AlphaMask::paint).
   void resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, RayKind kind, Hit* hit) const;
+  // A camera ray's hit on a surface: the last-painted camera paint on it, if
+  // any, replaces it.
+  void paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) const;
 
   std::shared_ptr<Impl> impl_;
 };

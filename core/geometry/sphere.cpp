@@ -63,6 +63,10 @@ SurfaceInteraction Sphere::interaction(const Ray& ray, float t) const {
   return si;
 }
 
+Normal3 Sphere::normal_at(const Point3& p) const {
+  return to_world.normal(Vec3(to_object_point(p) - glm::dvec3(center)));
+}
+
 void Sphere::bounds(Point3* lo, Point3* hi) const {
   // Exact bounds of a transformed sphere: per axis, r * |row of M|.
   const Point3 c = to_world.point(center);

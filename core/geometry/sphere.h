@@ -19,6 +19,8 @@ struct Sphere {
   std::optional<float> intersect(const Ray& ray, float t_min, float t_max) const;
   // Point, error bound, outward normal and uv of the hit at distance t.
   SurfaceInteraction interaction(const Ray& ray, float t) const;
+  // The outward normal, not normalised, at a point on the surface.
+  Normal3 normal_at(const Point3& p) const;
   // World-space bounds.
   void bounds(Point3* lo, Point3* hi) const;
   // Uniform scale (and rotation) keeps it a sphere: then world centre and radius exist.

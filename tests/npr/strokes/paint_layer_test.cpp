@@ -12,6 +12,18 @@ namespace {
 
 constexpr float kLayer = 0.003f;
 
+// An opaque paint layer of `triangles` triangles traced as quads.
+std::shared_ptr<AlphaMask> opaque_paint(size_t triangles) {
+  auto mask = std::make_shared<AlphaMask>();
+  mask->width = mask->height = 1;
+  mask->texels = {255};
+  mask->triangles.resize(triangles);
+  mask->paint = true;
+  mask->quads = true;
+  mask->layer_thickness = kLayer;
+  return mask;
+}
+
 // Two opaque paint quads over a floor at z = 0: quad 0 (painted first) at
 // z = 0.002 over x in [0, 1], quad 1 (painted last) lower, at z = 0.001, over
 // x in [0.5, 1.5]; each quad is the triangles (a, b, a1), (b, b1, a1).
@@ -28,13 +40,7 @@ struct PaintedFloor {
       idx.insert(idx.end(), {a, a + 1, a + 2, a + 1, a + 3, a + 2});
     }
     TriangleMesh mesh = make_mesh(p, {}, {}, idx, Transform{});
-    auto mask = std::make_shared<AlphaMask>();
-    mask->width = mask->height = 1;
-    mask->texels = {255};
-    mask->triangles.resize(4);
-    mask->paint = true;
-    mask->quads = true;
-    mask->layer_thickness = kLayer;
+    auto mask = opaque_paint(4);
     floor = scene.add(make_quad(Point3(-1.f, -1.f, 0.f), {4.f, 0.f, 0.f}, {0.f, 3.f, 0.f}, Transform{}));
     auto world = std::make_shared<const Shape>(std::move(mesh));
     paint = scene.add(std::make_shared<const ShapeBvh>(world, std::move(mask)), Transform{}, world, indirect);
@@ -129,26 +135,21 @@ TEST(StrokePaintLayer, IndirectRaysSkipPaintHiddenFromThemOnly) {
   }
 }
 
-// Quad 0 and quad 1 of PaintedFloor as two emitters' paint: the one added later
-// is on top where they overlap, whether the paint-order query asks the paint's
-// BVHs directly (every paint instance placed by the identity) or the top level
-// (one placed by a translation).
+// Quad 0 and quad 1 of PaintedFloor as two emitters' paint on a floor: the one
+// added later is on top where they overlap, whether camera rays find the floor
+// first and ask the paint's BVHs directly (every paint instance placed by the
+// identity) or ask the top level (one placed by a translation).
 TEST(StrokePaintLayer, PaintAddedLaterIsOnTopAcrossInstances) {
   for (const bool moved : {false, true}) {
     SCOPED_TRACE(moved ? "second paint placed by a translation" : "paint in world space");
     EmbreeScene scene;
+    scene.add(make_quad(Point3(-1.f, -1.f, 0.f), {4.f, 0.f, 0.f}, {0.f, 3.f, 0.f}, Transform{}));
     std::vector<uint32_t> paint;
     for (const auto& [x0, z] : {std::pair{0.f, 0.002f}, std::pair{0.5f, 0.001f}}) {
       const float shift = moved && x0 > 0.f ? 0.25f : 0.f;  // the BVH's mesh sits that far to -x
       const std::vector<Point3> p = {
           {x0 - shift, 0.f, z}, {x0 + 1.f - shift, 0.f, z}, {x0 - shift, 1.f, z}, {x0 + 1.f - shift, 1.f, z}};
-      auto mask = std::make_shared<AlphaMask>();
-      mask->width = mask->height = 1;
-      mask->texels = {255};
-      mask->triangles.resize(2);
-      mask->paint = true;
-      mask->quads = true;
-      mask->layer_thickness = kLayer;
+      auto mask = opaque_paint(2);
       const Transform to_world = Transform::translate({shift, 0.f, 0.f});
       auto local = std::make_shared<const Shape>(make_mesh(p, {}, {}, {0, 1, 2, 1, 3, 2}, Transform{}));
       auto world = std::make_shared<const Shape>(make_mesh(p, {}, {}, {0, 1, 2, 1, 3, 2}, to_world));
@@ -166,6 +167,28 @@ TEST(StrokePaintLayer, PaintAddedLaterIsOnTopAcrossInstances) {
     ASSERT_TRUE(scene.intersect(Ray{{0.2f, 0.5f, 1.f}, {0.f, 0.f, -1.f}}, kInfinity, &hit));
     EXPECT_EQ(hit.geometry, paint[0]);
   }
+}
+
+// Camera rays see paint on the surface they hit, in paint order: paint where a
+// ray meets no surface (a sheet past a silhouette) is not seen.
+TEST(StrokePaintLayer, CameraRaysSeePaintOnlyOnASurface) {
+  EmbreeScene scene;
+  scene.add(make_quad(Point3(0.f, 0.f, 0.f), {1.f, 0.f, 0.f}, {0.f, 1.f, 0.f}, Transform{}));
+  const std::vector<Point3> p = {{-1.f, 0.f, 0.001f}, {2.f, 0.f, 0.001f}, {-1.f, 1.f, 0.001f}, {2.f, 1.f, 0.001f}};
+  auto mask = opaque_paint(2);
+  auto world = std::make_shared<const Shape>(make_mesh(p, {}, {}, {0, 1, 2, 1, 3, 2}, Transform{}));
+  const uint32_t paint = scene.add(std::make_shared<const ShapeBvh>(world, std::move(mask)), Transform{}, world);
+  scene.commit();
+  Hit hit;
+  ASSERT_TRUE(scene.intersect(Ray{{0.5f, 0.5f, 1.f}, {0.f, 0.f, -1.f}}, kInfinity, &hit));
+  EXPECT_EQ(hit.geometry, paint);
+  EXPECT_NEAR(1.f - hit.t, 0.001f, 1e-6f);
+  // Seen at a grazing angle too: the stretch grows with 1 / cos.
+  const Vec3 grazing = glm::normalize(Vec3(0.f, 0.95f, -0.05f));
+  ASSERT_TRUE(scene.intersect(Ray{Point3(0.5f, 0.5f, 0.f) - grazing * (0.2f / grazing.y), grazing}, kInfinity, &hit));
+  EXPECT_EQ(hit.geometry, paint);
+  EXPECT_FALSE(scene.intersect(Ray{{1.5f, 0.5f, 1.f}, {0.f, 0.f, -1.f}}, kInfinity, &hit))
+      << "beside the surface the paint is a sheet in the air";
 }
 
 }  // namespace
