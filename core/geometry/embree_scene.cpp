@@ -469,9 +469,11 @@ void EmbreeScene::paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) con
   rh.ray.tnear = std::max(hit->t - reach, 0.f);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  for (const uint32_t id : impl_->camera_paint) {
-    context.instance = id;
-    rtcIntersect1(impl_->instances[id].bvh->embree_scene(), &context.rtc, &rh);
+  // Only the paint whose bounds hold the hit can lie over it.
+  for (size_t i = 0; i < impl_->camera_paint.size(); ++i) {
+    if (!inside(impl_->camera_paint_bounds[i])) continue;
+    context.instance = impl_->camera_paint[i];
+    rtcIntersect1(impl_->instances[context.instance].bvh->embree_scene(), &context.rtc, &rh);
   }
   if (top.found) *hit = {top.t, top.instance, top.prim, {top.u, top.v}};
 }
