@@ -48,6 +48,7 @@ struct Options {
   std::string widget_report;  // where to write the named widgets' rectangles with the screenshot
   std::vector<std::string> drops;  // files handed to the drop callback after the first frame
   std::string scene_dump;     // where to write the document (JSON) with the screenshot
+  std::string input_script;   // keys and mouse moves to play, one a line (ui/editor_app.h)
   std::string export_path;    // export through the dialog to this file, then take the screenshot
   float ui_scale = 0.f;       // overrides the saved interface size when set
 };
@@ -84,6 +85,8 @@ void usage() {
       "  --drop FILE          after the first frame, drop FILE on the window as GLFW would\n"
       "                       (repeatable)\n"
       "  --scene-dump FILE    with --screenshot: write the document as it then is (JSON) to FILE\n"
+      "  --input-script FILE  play the keys, clicks and mouse moves FILE lists, one a line, as the\n"
+      "                       frames go by (tests drive the editor with it; ui/editor_app.h)\n"
       "  --export FILE        fill the export dialog with FILE and press Start (replacing files);\n"
       "                       with --screenshot, the screenshot follows the finished export\n"
       "  --select NAME        select the object NAME at start (for screenshots and tests)\n"
@@ -143,6 +146,8 @@ bool parse(int argc, char** argv, Options* o) {
       o->export_path = v;
     } else if (a == "--scene-dump" && (v = value())) {
       o->scene_dump = v;
+    } else if (a == "--input-script" && (v = value())) {
+      o->input_script = v;
     } else if (a == "--drop" && (v = value())) {
       o->drops.emplace_back(v);
     } else if (!a.empty() && a[0] != '-' && o->scene.empty()) {
@@ -238,6 +243,7 @@ int main(int argc, char** argv) {
     inkray::EditorOptions editor_options;
     editor_options.scene = opt.scene;
     editor_options.threads = opt.threads;
+    editor_options.input_script = opt.input_script;
     // Scripted runs must not stop at a recovery question.
     editor_options.offer_recovery = opt.screenshot.empty() && opt.measure_edits == 0;
     inkray::EditorApp app(editor_options);

@@ -1,11 +1,13 @@
 // inkray-render: the headless renderer for final renders and render farms.
-#include "core/document/graph_reference.h"
 #include "app/render_cli.h"
+#include "core/compiler/compile.h"
+#include "core/document/graph_reference.h"
+#include "core/document/json_io.h"
+#include "core/film/film_partial.h"
+#include "core/film/partial_merge.h"
 #include "core/film/resolve.h"
 #include "core/render/batch_render.h"
 #include "core/render/render_outputs.h"
-#include "core/compiler/compile.h"
-#include "core/document/json_io.h"
 
 #include <algorithm>
 #include <chrono>
@@ -16,14 +18,16 @@
 namespace {
 
 using namespace inkray;
+namespace fs = std::filesystem;
 
 void print_progress(const RenderStats& s, const BatchLimits& limits) {
   double frac = double(s.spp) / double(limits.spp);
   if (limits.time_seconds > 0.0) frac = std::max(frac, s.elapsed_seconds / limits.time_seconds);
   frac = std::min(frac, 1.0);
   const int width = 30, filled = int(frac * width + 0.5);
-  std::fprintf(stderr, "\r[%.*s%*s] %3d%%  %u spp  %.1f s  error %.4f", filled, "##############################",
-               width - filled, "", int(frac * 100.0 + 0.5), s.spp, s.elapsed_seconds, s.relative_error);
+  std::fprintf(stderr, "\r[%.*s%*s] %3d%%  %u spp  %.1f s  error %.4f", filled,
+               "##############################", width - filled, "", int(frac * 100.0 + 0.5), s.spp,
+               s.elapsed_seconds, s.relative_error);
   std::fflush(stderr);
 }
 
@@ -38,7 +42,7 @@ void print_table(const std::vector<PassRecord>& history) {
   }
 }
 
-int write_scene_file(const SceneDesc& desc, const std::filesystem::path& file) {
+int write_scene_file(const SceneDesc& desc, const fs::path& file) {
   std::string error;
   if (!save_scene_as(desc, file, &error)) {
     std::fprintf(stderr, "error: %s\n", error.c_str());
@@ -56,22 +60,246 @@ Cancel::Clock::time_point deadline_after(Cancel::Clock::time_point start, double
   return start + std::chrono::duration_cast<Cancel::Clock::duration>(std::chrono::duration<double>(seconds));
 }
 
+// What stays the same from frame to frame: the compiler reuses what a frame's
+// changes leave valid, and the session its threads.
+struct Renderer {
+  const RenderCliOptions& opt;
+  SceneCompiler compiler;
+  RenderSession session;
+  explicit Renderer(const RenderCliOptions& o) : opt(o), session(o.threads.value_or(0)) {}
+};
+
+// One frame's files.
+struct FrameFiles {
+  std::optional<int> frame;  // set with --frames
+  fs::path output, checkpoint;
+  std::vector<AovFile> aovs;
+  bool all_exist() const {
+    std::error_code ec;
+    if (!fs::exists(output, ec)) return false;
+    for (const AovFile& a : aovs)
+      if (!fs::exists(a.file, ec)) return false;
+    return true;
+  }
+};
+
+FrameFiles frame_files(const RenderCliOptions& opt, std::optional<int> frame) {
+  FrameFiles f;
+  f.frame = frame;
+  f.output = frame ? expand_frame_pattern(opt.output, *frame) : opt.output;
+  f.checkpoint = checkpoint_path(f.output);
+  for (const auto& a : opt.aovs)
+    if (!a.file.empty())
+      f.aovs.push_back({*aov_from_name(a.name), frame ? expand_frame_pattern(a.file, *frame) : a.file});
+  return f;
+}
+
+// The film's state as a partial: passes [first, next) and the pass in progress.
+PartialInfo film_info(const RenderSession& session, const SceneDesc& desc, const PixelWindow& window) {
+  PartialInfo info;
+  info.width = desc.render.width;
+  info.height = desc.render.height;
+  info.window = window;
+  info.first_pass = session.first_pass();
+  info.end_pass = session.stats().passes;
+  const auto& tiles = session.tiles_done();
+  if (std::any_of(tiles.begin(), tiles.end(), [](uint8_t t) { return t != 0; })) info.tiles_done = tiles;
+  info.frame = desc.render.frame;
+  info.seed = desc.render.seed;
+  info.scene = scene_to_string(desc);
+  info.aovs = session.film().aovs().first_hit();
+  info.lines = session.film().has_lines();
+  info.nonfinite = session.film().nonfinite_samples();
+  return info;
+}
+
+// Renders one frame (or the still) and writes its files. `start` is when this frame's
+// time began (for the first, before the scene was read).
+int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::Clock::time_point start) {
+  const RenderCliOptions& opt = r.opt;
+  const std::string label = files.frame ? "frame " + std::to_string(*files.frame) : opt.scene.string();
+  const auto out_of_time = [&](double limit, const char* phase) {
+    std::fprintf(stderr,
+                 "error: %s: the time limit of %g s ran out while %s (after %.1f s); nothing was written\n",
+                 label.c_str(), limit, phase, seconds_since(start));
+    return 1;
+  };
+  if (files.frame) desc.render.frame = float(*files.frame);
+
+  // --resume: a checkpoint continues; without one, a render whose files all exist is done.
+  PartialInfo resumed;
+  std::unique_ptr<Film> resumed_film;
+  std::error_code ec;
+  if (opt.resume && fs::exists(files.checkpoint, ec)) {
+    std::string error;
+    if (!read_partial(files.checkpoint, &resumed, &resumed_film, &error)) {
+      std::fprintf(stderr, "error: cannot resume: %s\n", error.c_str());
+      return 1;
+    }
+  } else if (opt.resume && files.all_exist()) {
+    if (!opt.quiet) std::printf("%s: %s exists, skipped\n", label.c_str(), files.output.c_str());
+    return 0;
+  }
+
+  const double time_limit = opt.time_seconds.value_or(desc.render.time_limit);
+  const Cancel deadline(nullptr, deadline_after(start, time_limit));
+  CompileOptions options;
+  options.cancel = deadline;
+  options.memory_limit = opt.memory_limit.value_or(0);
+  const CompileResult compiled = r.compiler.compile(desc, options);
+  if (compiled.cancelled) return out_of_time(time_limit, "building the scene");
+  if (!compiled.scene) {
+    for (const auto& e : compiled.errors)
+      std::fprintf(stderr, "error: %s: %s\n", opt.scene.c_str(), e.c_str());
+    return 1;
+  }
+
+  AovSet aovs;
+  for (const auto& a : opt.aovs) aovs.add(*aov_from_name(a.name));
+  RenderSession& session = r.session;
+  session.set_scene(compiled.scene, aovs);
+  const PixelWindow whole{0, 0, desc.render.width, desc.render.height};
+  const PixelWindow window = opt.crop.value_or(whole);
+  session.set_region(opt.crop ? window : PixelWindow{});
+  const bool partial = opt.samples.has_value();
+  const uint32_t first = partial ? opt.samples->first : 0;
+  const uint32_t end = partial ? opt.samples->second : uint32_t(opt.spp.value_or(desc.render.spp));
+
+  if (resumed_film) {
+    PartialInfo expected = film_info(session, desc, window);
+    expected.first_pass = first;
+    std::string problem = partial_mismatch(resumed, expected);
+    if (problem.empty() && resumed.window != window)
+      problem = "it holds pixels " + describe_window(resumed.window) + ", this render " + describe_window(window);
+    if (problem.empty() && resumed.first_pass != first)
+      problem = "it starts at sample " + std::to_string(resumed.first_pass) + ", this render at " +
+                std::to_string(first);
+    if (problem.empty() &&
+        (resumed.end_pass > end || (resumed.end_pass == end && !resumed.tiles_done.empty())))
+      problem = "it holds samples " + describe_range(resumed.first_pass, resumed.end_pass) +
+                ", more than the " + describe_range(first, end) + " asked for";
+    if (!problem.empty()) {
+      std::fprintf(stderr, "error: %s: cannot resume this render from it: %s (remove it to start again)\n",
+                   files.checkpoint.c_str(), problem.c_str());
+      return 1;
+    }
+    session.load_film(*resumed_film);
+    resumed_film.reset();
+    session.continue_from(first, resumed.end_pass, resumed.tiles_done);
+  } else {
+    session.continue_from(first, first);
+  }
+
+  // The render gets what reading and building left of the time, less what the painterly
+  // filter will need after it.
+  double render_seconds = 0.0;
+  if (time_limit > 0.0) {
+    const double filter_seconds =
+        partial ? 0.0
+                : 1.25 * estimate_painterly_seconds(desc.render, desc.render.width, desc.render.height,
+                                                    &session.pool());
+    render_seconds = time_limit - seconds_since(start) - filter_seconds;
+    if (render_seconds <= 0.0) {
+      std::fprintf(
+          stderr,
+          "error: %s: the painterly filter alone takes about %.1f s at %dx%d, more than the time limit of "
+          "%g s leaves; nothing was written\n",
+          label.c_str(), filter_seconds / 1.25, desc.render.width, desc.render.height, time_limit);
+      return 1;
+    }
+  }
+  const BatchLimits limits{int(end - first), render_seconds};
+  const bool progress = !opt.quiet && isatty(fileno(stderr));
+  const auto write_checkpoint = [&] {
+    const PartialInfo info = film_info(session, desc, window);
+    if (info.end_pass == info.first_pass && info.tiles_done.empty()) return;  // nothing rendered yet
+    std::string error;
+    if (!write_partial_file(session.film(), info, files.checkpoint, &error))
+      std::fprintf(stderr, "%swarning: checkpoint not written: %s\n", progress ? "\n" : "", error.c_str());
+  };
+  auto last_checkpoint = Cancel::Clock::now();
+  const auto history = render_batch(session, limits, [&](const RenderStats& s) {
+    if (progress) print_progress(s, limits);
+    if (opt.checkpoint_minutes && s.spp < uint32_t(limits.spp) &&
+        seconds_since(last_checkpoint) >= *opt.checkpoint_minutes * 60.0) {
+      write_checkpoint();
+      last_checkpoint = Cancel::Clock::now();
+    }
+  });
+  if (progress) std::fprintf(stderr, "\n");
+  const bool complete = session.stats().passes >= end;
+  if (!complete && opt.checkpoint_minutes) write_checkpoint();
+  if (session.stats().spp == 0) return out_of_time(time_limit, "rendering the first sample of every pixel");
+
+  std::string error;
+  if (partial) {
+    if (!complete) {
+      std::fprintf(stderr,
+                   "error: %s: the time limit of %g s ran out at sample %u of %u-%u; the partial %s was not "
+                   "written%s\n",
+                   label.c_str(), time_limit, session.stats().passes, first, end, files.output.c_str(),
+                   opt.checkpoint_minutes ? " (--resume continues from the checkpoint)" : "");
+      return 1;
+    }
+    if (!write_partial_file(session.film(), film_info(session, desc, window), files.output, &error)) {
+      std::fprintf(stderr, "error: %s\n", error.c_str());
+      return 1;
+    }
+  } else {
+    // Every output is staged before any is replaced: a failed AOV leaves no image behind.
+    switch (write_render_outputs(session, files.output, files.aovs, &error, deadline,
+                                 opt.crop ? window : PixelWindow{})) {
+      case OutputsWritten::all:
+        break;
+      case OutputsWritten::cancelled:
+        return out_of_time(time_limit, "applying the painterly filter");
+      case OutputsWritten::failed:
+        std::fprintf(stderr, "error: %s\n", error.c_str());
+        return 1;
+    }
+  }
+  if (complete && fs::exists(files.checkpoint, ec)) fs::remove(files.checkpoint, ec);
+
+  if (opt.quiet) return 0;
+  const RenderStats& s = session.stats();
+  if (files.frame) {
+    std::printf("frame %d: %s, %u spp, %.3f s\n", *files.frame, files.output.c_str(), s.spp,
+                seconds_since(start));
+    std::fflush(stdout);
+    return 0;
+  }
+  print_table(history);
+  std::printf("%s: ", files.output.c_str());
+  if (partial) std::printf("partial, samples %u-%u of ", first, end);
+  std::printf("%dx%d", desc.render.width, desc.render.height);
+  if (opt.crop) std::printf(" (pixels %d,%d-%d,%d)", window.x0, window.y0, window.x1, window.y1);
+  std::printf(", %u spp, %.3f s, %d threads, %.2f M rays/s, %.2f M paths/s", s.spp, s.elapsed_seconds,
+              session.threads(), double(s.rays) / s.elapsed_seconds * 1e-6,
+              double(s.paths) / s.elapsed_seconds * 1e-6);
+  if (s.nonfinite_samples)
+    std::printf(", %llu non-finite samples dropped", (unsigned long long)s.nonfinite_samples);
+  std::printf("\n");
+  return 0;
+}
+
 // --time bounds the whole run: the clock starts before the scene is read, and reading,
 // building, rendering and the painterly filter all stop at the deadline. Only the
 // render itself ends in an image; any other phase cut short is an error that writes
-// nothing (a half-built scene or half-filtered image would be a wrong render).
+// nothing (a half-built scene or half-filtered image would be a wrong render). With
+// --frames it bounds each frame, the first with the reading.
 int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
-  const auto out_of_time = [&](double limit, const char* phase) {
-    std::fprintf(stderr, "error: %s: the time limit of %g s ran out while %s (after %.1f s); nothing was written\n",
-                 opt.scene.c_str(), limit, phase, seconds_since(start));
-    return 1;
-  };
   // Before the scene is read only --time is known; its render.time_limit applies after.
   const double cli_limit = opt.time_seconds.value_or(0.0);
   // --write-scene reads as the editor does: a scene that cannot render yet is still saved.
   const ReadFor purpose = opt.write_scene.empty() ? ReadFor::rendering : ReadFor::editing;
   SceneLoadResult loaded = load_scene(opt.scene, purpose, Cancel(nullptr, deadline_after(start, cli_limit)));
-  if (loaded.cancelled) return out_of_time(cli_limit, "reading the scene");
+  if (loaded.cancelled) {
+    std::fprintf(stderr,
+                 "error: %s: the time limit of %g s ran out while reading the scene (after %.1f s); nothing "
+                 "was written\n",
+                 opt.scene.c_str(), cli_limit, seconds_since(start));
+    return 1;
+  }
   if (!loaded) {
     for (const auto& e : loaded.errors) std::fprintf(stderr, "error: %s\n", e.c_str());
     return 1;
@@ -87,62 +315,41 @@ int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
                  desc.render.width, desc.render.height);
     return 1;
   }
-  const double time_limit = opt.time_seconds.value_or(desc.render.time_limit);
-  const Cancel deadline(nullptr, deadline_after(start, time_limit));
-  CompileOptions options;
-  options.cancel = deadline;
-  options.memory_limit = opt.memory_limit.value_or(0);
-  const CompileResult compiled = compile_scene(desc, options);
-  if (compiled.cancelled) return out_of_time(time_limit, "building the scene");
-  if (!compiled.scene) {
-    for (const auto& e : compiled.errors) std::fprintf(stderr, "error: %s: %s\n", opt.scene.c_str(), e.c_str());
-    return 1;
+  if (opt.crop && (opt.crop->x1 > desc.render.width || opt.crop->y1 > desc.render.height)) {
+    std::fprintf(stderr, "inkray-render: --crop %d %d %d %d: the window is not inside the %dx%d image\n",
+                 opt.crop->x0, opt.crop->y0, opt.crop->x1, opt.crop->y1, desc.render.width,
+                 desc.render.height);
+    return 2;
   }
-
-  AovSet aovs;
-  for (const auto& a : opt.aovs) aovs.add(*aov_from_name(a.name));
-  RenderSession session(opt.threads.value_or(0));
-  session.set_scene(compiled.scene, aovs);
-  // The render gets what reading and building left of the time, less what the painterly
-  // filter will need after it.
-  double render_seconds = 0.0;
-  if (time_limit > 0.0) {
-    const double filter_seconds =
-        1.25 * estimate_painterly_seconds(desc.render, desc.render.width, desc.render.height, &session.pool());
-    render_seconds = time_limit - seconds_since(start) - filter_seconds;
-    if (render_seconds <= 0.0) {
+  std::vector<std::optional<int>> frames;
+  if (!opt.frames) {
+    frames.push_back(std::nullopt);  // the still: the scene's current frame
+  } else {
+    FrameRange range = *opt.frames;
+    if (range.all) {
+      range.first = desc.render.frame_start;
+      range.last = desc.render.frame_end;
+      if (range.last < range.first) {
+        std::fprintf(stderr, "error: %s: --frames all: the scene's frames %d-%d are no range\n",
+                     opt.scene.c_str(), range.first, range.last);
+        return 1;
+      }
+    }
+    for (int f = range.first; f <= range.last; f += range.step) frames.push_back(f);
+    if (frames.size() > 1 && !has_frame_pattern(opt.output)) {
       std::fprintf(stderr,
-                   "error: %s: the painterly filter alone takes about %.1f s at %dx%d, more than the time limit of "
-                   "%g s leaves; nothing was written\n",
-                   opt.scene.c_str(), filter_seconds / 1.25, desc.render.width, desc.render.height, time_limit);
-      return 1;
+                   "inkray-render: --frames all renders frames %d-%d: -o needs a run of '#' for the frame "
+                   "number (e.g. out_####.png)\n",
+                   range.first, range.last);
+      return 2;
     }
   }
-  const BatchLimits limits{opt.spp.value_or(desc.render.spp), render_seconds};
-  const bool progress = !opt.quiet && isatty(fileno(stderr));
-  const auto history = render_batch(session, limits, [&](const RenderStats& s) {
-    if (progress) print_progress(s, limits);
-  });
-  if (progress) std::fprintf(stderr, "\n");
-  if (history.empty()) return out_of_time(time_limit, "rendering the first sample of every pixel");
-
-  // Every output is staged before any is replaced: a failed AOV leaves no image behind.
-  std::vector<AovFile> aov_files;
-  for (const auto& a : opt.aovs) aov_files.push_back({*aov_from_name(a.name), a.file});
-  std::string error;
-  switch (write_render_outputs(session, opt.output, aov_files, &error, deadline)) {
-    case OutputsWritten::all: break;
-    case OutputsWritten::cancelled: return out_of_time(time_limit, "applying the painterly filter");
-    case OutputsWritten::failed: std::fprintf(stderr, "error: %s\n", error.c_str()); return 1;
-  }
-  if (!opt.quiet) {
-    print_table(history);
-    const RenderStats& s = session.stats();
-    std::printf("%s: %dx%d, %u spp, %.3f s, %d threads, %.2f M rays/s, %.2f M paths/s", opt.output.c_str(),
-                desc.render.width, desc.render.height, s.spp, s.elapsed_seconds, session.threads(),
-                double(s.rays) / s.elapsed_seconds * 1e-6, double(s.paths) / s.elapsed_seconds * 1e-6);
-    if (s.nonfinite_samples) std::printf(", %llu non-finite samples dropped", (unsigned long long)s.nonfinite_samples);
-    std::printf("\n");
+  Renderer renderer(opt);
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const auto frame_start = i == 0 ? start : Cancel::Clock::now();
+    if (const int status = render_frame(renderer, desc, frame_files(opt, frames[i]), frame_start);
+        status != 0)
+      return status;
   }
   return 0;
 }

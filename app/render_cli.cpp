@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace inkray {
@@ -13,6 +14,7 @@ namespace inkray {
 const char* const kRenderCliHelp = R"(inkray-render: render an inkray scene without a window.
 
 usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
+       inkray-render SCENE.json --samples A B -o PART.exr [options]
        inkray-render SCENE.json --write-scene OUT.json
 
 
@@ -21,7 +23,7 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
   --time SECONDS        the whole run, reading and building the scene included, takes at most this
                         long (default: the scene's render.time_limit; 0 means no limit); the render
                         stops at whichever of --spp and --time comes first, and a scene that cannot
-                        be built in time is an error that writes nothing
+                        be built in time is an error that writes nothing; with --frames, each frame
   --memory-limit SIZE   refuse a scene whose estimated memory is above SIZE (bytes, or with a K, M,
                         G or T suffix; default: half of this machine's memory)
   --threads N           worker threads (default: one per hardware thread)
@@ -30,7 +32,8 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
   --aov NAME=FILE       also write an AOV; may be repeated. NAME is a first-hit AOV (albedo, normal,
                         depth, object_id, material_id) or an outline opacity: outline (all line
                         types) or outline_depth, outline_crease, outline_intersection,
-                        outline_material, outline_object, outline_silhouette (one type each)
+                        outline_material, outline_object, outline_silhouette (one type each).
+                        With --samples, --aov NAME keeps the AOV's sums in the partial
   --write-scene FILE    read and check the scene, write it as the editor saves it (every
                         parameter, asset paths relative to FILE's folder) and exit without
                         rendering; upgrades and normalises scene files
@@ -39,9 +42,29 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
                         their parameter lists, and exit
   -h, --help            this text
 
-The same scene, seed and sample count give the same image at any thread count.
+Final renders on many machines (docs/final-renders.md):
+  --frames A-B[:STEP]   render frames A to B (both included) every STEP frames; "all" is the
+                        scene's render.frame_start to frame_end, and a single number one frame.
+                        A run of '#' in -o and in --aov files becomes the frame number, zero-padded
+                        (out_####.png -> out_0001.png); more than one frame needs it
+  --samples A B         render only samples A to B (B excluded) of every pixel, as they fall in a
+                        render of all of them, and write -o (.exr) as a partial: the film's sums
+                        with the scene and its settings. inkray-merge adds partials up to the image
+  --crop X0 Y0 X1 Y1    render only pixels X0 to X1 and Y0 to Y1 (X1, Y1 excluded); the image and
+                        AOVs written are that window (the painterly filter sees nothing around it),
+                        and with --samples the partial holds it
+  --checkpoint MINUTES  every MINUTES, and when the time limit ends the render early, write the
+                        film as a partial to OUT.checkpoint.exr (OUT being -o); it is removed when
+                        the render completes
+  --resume              continue from OUT.checkpoint.exr when there is one (refused when it is of
+                        another scene, setting, frame or size); with none, skip the render when
+                        its image and AOV files all exist
+
+The same scene, seed and sample count give the same image at any thread count, on one machine
+or merged from slices and crops of it.
 After the render a table lists, per pass checkpoint, the samples per pixel, the elapsed
-seconds and the estimated relative error (from the difference of even and odd passes).
+seconds and the estimated relative error (from the difference of even and odd passes);
+with --frames, one line per frame.
 Exit status: 0 on success, 1 on a scene or output error, 2 on bad arguments.
 )";
 
@@ -80,7 +103,67 @@ std::optional<std::uint64_t> parse_size(std::string_view text) {
   return std::uint64_t(bytes);
 }
 
+// An integer with an optional sign at the start of `text`; advances past it.
+bool take_int(std::string_view& text, int* out) {
+  size_t n = 0;
+  if (n < text.size() && (text[n] == '-' || text[n] == '+')) ++n;
+  while (n < text.size() && text[n] >= '0' && text[n] <= '9') ++n;
+  std::string_view digits = text.substr(0, n);
+  if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);
+  long v = 0;
+  if (!parse_number(digits, &v) || v < -1000000 || v > 1000000) return false;
+  *out = int(v);
+  text.remove_prefix(n);
+  return true;
+}
+
 }  // namespace
+
+std::optional<FrameRange> parse_frame_range(std::string_view text) {
+  FrameRange r;
+  if (text == "all") {
+    r.all = true;
+    return r;
+  }
+  if (!take_int(text, &r.first)) return std::nullopt;
+  r.last = r.first;
+  if (!text.empty() && text[0] == '-') {
+    text.remove_prefix(1);
+    if (!take_int(text, &r.last)) return std::nullopt;
+  }
+  if (!text.empty() && text[0] == ':') {
+    text.remove_prefix(1);
+    if (!take_int(text, &r.step) || r.step < 1) return std::nullopt;
+  }
+  if (!text.empty() || r.last < r.first) return std::nullopt;
+  return r;
+}
+
+bool has_frame_pattern(const std::filesystem::path& path) {
+  return path.string().find('#') != std::string::npos;
+}
+
+std::filesystem::path expand_frame_pattern(const std::filesystem::path& path, int frame) {
+  const std::string in = path.string();
+  std::string out;
+  for (size_t i = 0; i < in.size();) {
+    if (in[i] != '#') {
+      out += in[i++];
+      continue;
+    }
+    size_t run = 0;
+    while (i + run < in.size() && in[i + run] == '#') ++run;
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%0*d", int(run), frame);
+    out += digits;
+    i += run;
+  }
+  return out;
+}
+
+std::filesystem::path checkpoint_path(const std::filesystem::path& output) {
+  return output.string() + ".checkpoint.exr";
+}
 
 std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* argv, std::string* error) {
   RenderCliOptions o;
@@ -155,12 +238,62 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       if (!v) return std::nullopt;
       const size_t eq = v->find('=');
       const std::string_view name = v->substr(0, eq);
-      if (eq == std::string_view::npos || eq + 1 == v->size() || !aov_from_name(name)) {
+      if ((eq != std::string_view::npos && eq + 1 == v->size()) || !aov_from_name(name)) {
         *error = "--aov: expected NAME=FILE with NAME one of " + aov_name_list() + "; got \"" +
                  std::string(*v) + "\"";
         return std::nullopt;
       }
-      o.aovs.push_back({std::string(name), std::string(v->substr(eq + 1))});
+      o.aovs.push_back(
+          {std::string(name), eq == std::string_view::npos ? "" : std::string(v->substr(eq + 1))});
+    } else if (arg == "--samples") {
+      int a = 0, b = 0;
+      std::optional<int> value;
+      if (!int_option(i, arg, 0, 1 << 20, &value)) return std::nullopt;
+      a = *value;
+      if (!int_option(i, arg, 1, 1 << 20, &value)) return std::nullopt;
+      b = *value;
+      if (b <= a) {
+        *error = "--samples A B: B must be above A (samples A to B, B excluded), got " + std::to_string(a) +
+                 " " + std::to_string(b);
+        return std::nullopt;
+      }
+      o.samples = {uint32_t(a), uint32_t(b)};
+    } else if (arg == "--crop") {
+      int c[4];
+      for (int k = 0; k < 4; ++k) {
+        std::optional<int> value;
+        if (!int_option(i, arg, 0, 16384, &value)) return std::nullopt;
+        c[k] = *value;
+      }
+      if (c[2] <= c[0] || c[3] <= c[1]) {
+        *error = "--crop X0 Y0 X1 Y1: the window needs X1 > X0 and Y1 > Y0 (X1, Y1 excluded), got " +
+                 std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]) + " " +
+                 std::to_string(c[3]);
+        return std::nullopt;
+      }
+      o.crop = PixelWindow{c[0], c[1], c[2], c[3]};
+    } else if (arg == "--checkpoint") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      double m = 0.0;
+      if (!parse_number(*v, &m) || m <= 0.0 || m > 1e6) {
+        *error = "--checkpoint: expected minutes above 0, got \"" + std::string(*v) + "\"";
+        return std::nullopt;
+      }
+      o.checkpoint_minutes = m;
+    } else if (arg == "--resume") {
+      o.resume = true;
+    } else if (arg == "--frames") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      o.frames = parse_frame_range(*v);
+      if (!o.frames) {
+        *error =
+            "--frames: expected FIRST-LAST[:STEP] (LAST not below FIRST, STEP at least 1), a frame or "
+            "\"all\"; got \"" +
+            std::string(*v) + "\"";
+        return std::nullopt;
+      }
     } else if (!arg.empty() && arg[0] == '-') {
       *error = "unknown option \"" + std::string(arg) + "\" (see --help)";
       return std::nullopt;
@@ -176,8 +309,9 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
     return std::nullopt;
   }
   if (!o.write_scene.empty()) {
-    if (!o.output.empty() || !o.aovs.empty()) {
-      *error = "--write-scene writes a scene and renders nothing: leave out -o and --aov";
+    if (!o.output.empty() || !o.aovs.empty() || o.samples || o.crop || o.frames || o.checkpoint_minutes ||
+        o.resume) {
+      *error = "--write-scene writes a scene and renders nothing: leave out -o, --aov and the render options";
       return std::nullopt;
     }
     return o;
@@ -186,9 +320,54 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
     *error = "no output file given: add -o OUT.png (or .pfm, .exr)";
     return std::nullopt;
   }
-  // Every output is checked before the render, so a bad path costs no render time.
-  std::vector<PlannedOutput> outputs = {{"-o " + o.output.string(), o.output}};
-  for (const auto& a : o.aovs) outputs.push_back({"--aov " + a.name + "=" + a.file.string(), a.file});
+  if (o.samples) {
+    if (o.spp) {
+      *error = "--samples A B says which samples to render: leave out --spp";
+      return std::nullopt;
+    }
+    if (image_format_of(o.output) != ImageFormat::exr) {
+      *error = "--samples writes a partial render, an OpenEXR file: -o must end in .exr, got \"" +
+               o.output.string() + "\"";
+      return std::nullopt;
+    }
+  }
+  for (const auto& a : o.aovs) {
+    if (o.samples && !a.file.empty()) {
+      *error = "--aov " + a.name + "=" + a.file.string() +
+               ": with --samples the AOV's sums go into the partial; "
+               "give only --aov " +
+               a.name + " and name its file to inkray-merge";
+      return std::nullopt;
+    }
+    if (!o.samples && a.file.empty()) {
+      *error = "--aov " + a.name + ": expected NAME=FILE (a NAME alone is for partials, with --samples)";
+      return std::nullopt;
+    }
+  }
+  // More than one frame into one file would overwrite it frame after frame.
+  const bool many_frames = o.frames && (o.frames->all || o.frames->last > o.frames->first);
+  if (many_frames) {
+    if (!has_frame_pattern(o.output)) {
+      *error =
+          "--frames renders several frames: -o needs a run of '#' for the frame number (e.g. out_####.png), "
+          "got \"" +
+          o.output.string() + "\"";
+      return std::nullopt;
+    }
+    for (const auto& a : o.aovs)
+      if (!a.file.empty() && !has_frame_pattern(a.file)) {
+        *error = "--frames renders several frames: --aov " + a.name + "=" + a.file.string() +
+                 " needs a run of '#' for the frame number";
+        return std::nullopt;
+      }
+  }
+  // Every output is checked before the render, so a bad path costs no render time
+  // (for frames, as the first frame names them: the folders are those of every frame).
+  const int frame = o.frames && !o.frames->all ? o.frames->first : 0;
+  std::vector<PlannedOutput> outputs = {{"-o " + o.output.string(), expand_frame_pattern(o.output, frame)}};
+  for (const auto& a : o.aovs)
+    if (!a.file.empty())
+      outputs.push_back({"--aov " + a.name + "=" + a.file.string(), expand_frame_pattern(a.file, frame)});
   for (const auto& planned : outputs) {
     if (image_format_of(planned.file) == ImageFormat::unknown) {
       *error = planned.file.string() + ": unknown image format (expected .png, .pfm or .exr)";

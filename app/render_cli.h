@@ -1,6 +1,8 @@
 // Command-line options of inkray-render and their parsing.
 #pragma once
 
+#include "core/film/film.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -11,7 +13,13 @@ namespace inkray {
 
 struct AovOutput {
   std::string name;
-  std::filesystem::path file;
+  std::filesystem::path file;  // empty with --samples: the AOV's sums go into the partial
+};
+
+// --frames: first-last every step, or the scene's frame_start..frame_end ("all").
+struct FrameRange {
+  bool all = false;
+  int first = 1, last = 1, step = 1;
 };
 
 struct RenderCliOptions {
@@ -22,6 +30,12 @@ struct RenderCliOptions {
   std::optional<double> time_seconds;
   std::optional<std::uint64_t> memory_limit;  // bytes; default: half the machine's memory
   std::vector<AovOutput> aovs;
+  // --samples A B: passes [A, B) written as a partial (docs/final-renders.md).
+  std::optional<std::pair<uint32_t, uint32_t>> samples;
+  std::optional<PixelWindow> crop;          // --crop X0 Y0 X1 Y1
+  std::optional<double> checkpoint_minutes;  // --checkpoint
+  bool resume = false;
+  std::optional<FrameRange> frames;
   bool quiet = false;
   bool help = false;
   bool node_reference = false;  // print the material-graph node reference (Markdown) and exit
@@ -31,5 +45,13 @@ struct RenderCliOptions {
 // that cannot be written or name the same file twice (checked before any rendering).
 std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* argv, std::string* error);
 extern const char* const kRenderCliHelp;
+
+// "A-B[:STEP]", "A" or "all"; nullopt when it is none of them.
+std::optional<FrameRange> parse_frame_range(std::string_view text);
+// Every run of '#' in `path` replaced by `frame`, zero-padded to the run's length.
+std::filesystem::path expand_frame_pattern(const std::filesystem::path& path, int frame);
+bool has_frame_pattern(const std::filesystem::path& path);
+// Where --checkpoint keeps the film of a render writing `output`.
+std::filesystem::path checkpoint_path(const std::filesystem::path& output);
 
 }  // namespace inkray

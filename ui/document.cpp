@@ -2,6 +2,7 @@
 
 #include "core/document/asset_paths.h"
 #include "core/document/asset_relink.h"
+#include "core/document/animation_edit.h"
 #include "core/document/json_io.h"
 
 #include <algorithm>
@@ -60,24 +61,46 @@ std::string Document::display_name() const {
 }
 
 void Document::edit(SceneDesc after, std::string label, std::string merge_key, Selection selection) {
+  if (after.render.frame != scene_.render.frame) {
+    SceneDesc same_frame = after;
+    same_frame.render.frame = scene_.render.frame;
+    if (same_frame == scene_) return set_frame(after.render.frame);
+  }
+  if (!scene_.animation.empty()) {
+    drop_vanished_tracks(scene_, after);
+    key_edited(scene_, after);
+  }
   history_.apply(scene_, std::move(after), std::move(label), std::move(merge_key), selection);
   ++revision_;
 }
 
+void Document::set_frame(double frame) {
+  if (double(scene_.render.frame) == frame) return;
+  scene_.render.frame = float(frame);
+  ++revision_;
+}
+
+// Undo and redo restore documents as they were, but not the frame they were on.
 bool Document::undo(Selection* selection) {
+  const float frame = scene_.render.frame;
   if (!history_.undo(scene_, selection)) return false;
+  scene_.render.frame = frame;
   ++revision_;
   return true;
 }
 
 bool Document::discard_newest() {
+  const float frame = scene_.render.frame;
   if (!history_.discard_newest(scene_)) return false;
+  scene_.render.frame = frame;
   ++revision_;
   return true;
 }
 
 bool Document::redo(Selection* selection) {
+  const float frame = scene_.render.frame;
   if (!history_.redo(scene_, selection)) return false;
+  scene_.render.frame = frame;
   ++revision_;
   return true;
 }

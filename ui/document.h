@@ -1,5 +1,7 @@
 // The open scene document: its SceneDesc, file, undo history and unsaved
-// state. Every change goes through edit(), so every change can be undone.
+// state. Every change goes through edit(), so every change can be undone; the one
+// exception is the current frame (set_frame), which, as in Blender, is where the user
+// looks rather than what the document says, and which undo leaves where it is.
 #pragma once
 
 #include "core/document/json_io.h"
@@ -27,7 +29,12 @@ class Document {
   std::string display_name() const;
 
   // `selection` (what was selected before the edit) comes back on undo; see CommandStack.
+  // The tracks follow (core/document/animation_edit.h): an animated parameter the edit
+  // changed is keyed at the current frame, and tracks of parameters it took away go
+  // with them. An edit of the current frame alone is set_frame.
   void edit(SceneDesc after, std::string label, std::string merge_key = {}, Selection selection = {});
+  // Shows another frame (render.frame): no undo step, and the document stays saved.
+  void set_frame(double frame);
   void end_merge() { history_.end_merge(); }
   bool undo(Selection* selection = nullptr);
   // The newest step taken back with no redo entry (see CommandStack::discard_newest).

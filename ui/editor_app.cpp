@@ -1,5 +1,6 @@
 #include "ui/editor_app.h"
 
+#include "core/document/animation.h"
 #include "ui/app_paths.h"
 #include "ui/camera_controller.h"
 #include "ui/file_drop.h"
@@ -8,12 +9,21 @@
 #include "ui/render_panel.h"
 #include "ui/scene_edits.h"
 #include "ui/scene_graph_panel.h"
+#include "ui/widget_report.h"
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_impl_glfw.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <thread>
+#include <utility>
 
 namespace inkray {
 namespace {
@@ -37,6 +47,199 @@ bool operator_equal(const ViewportView& a, const ViewportView& b) {
 
 }  // namespace
 
+// Scripted input for tests: the keys and mouse GLFW's callbacks would deliver, one
+// command a frame (a key or a click takes two: press, release), so a run under Xvfb is
+// repeatable. A text file, one command a line ('#' starts a comment):
+//   wait N              let N frames pass
+//   wait-ms MS          let MS milliseconds pass
+//   move X Y            the cursor to window pixels
+//   hover NAME [FX FY]  the cursor onto a widget the widget report names (FX FY: where
+//                       in it, as fractions; its centre by default)
+//   down [B] / up [B]   hold or release a mouse button (left, right, middle)
+//   click [B]           press it and release it the next frame
+//   key [ctrl+][shift+][alt+]KEY   press a key (a letter, a digit, space, left, right,
+//                       up, down, escape, enter, tab, backspace, delete, home, end),
+//                       released the next frame
+//   type TEXT           characters, as typed into a focused field
+//   print-frame         prints "frame F" (the current frame)
+//   print-value PATH    prints "value PATH V..." (the parameter at the current frame)
+//   print-keys PATH     prints "keys PATH F..." (the frames of its keys)
+// The script ends by printing "input script: done"; a command it cannot do prints why
+// and ends it.
+class InputScript {
+ public:
+  explicit InputScript(std::vector<std::string> lines) : lines_(std::move(lines)) {}
+
+  // Runs at the end of a frame; what it does reaches ImGui at the next one.
+  void step(EditorState& state) {
+    if (finished_) return;
+    GLFWwindow* window = glfwGetCurrentContext();
+    if (!window) return;
+    if (!entered_) ImGui_ImplGlfw_CursorEnterCallback(window, 1), entered_ = true;
+    // A key or a click is released the frame after its press, and the next command waits
+    // one frame more, so a key pressed twice in a row reads as two presses.
+    if (!held_keys_.empty() || release_after_click_ >= 0) {
+      for (int key : held_keys_) ImGui_ImplGlfw_KeyCallback(window, key, 0, GLFW_RELEASE, 0);
+      held_keys_.clear();
+      merge_key_mods();
+      if (release_after_click_ >= 0) {
+        buttons_[release_after_click_] = false;
+        ImGui_ImplGlfw_MouseButtonCallback(window, release_after_click_, GLFW_RELEASE, 0);
+        release_after_click_ = -1;
+      }
+      return;
+    }
+    // A held button is pressed again each frame: ImGui's backend reads a press for one
+    // frame, and the real button state from GLFW, which a script cannot set.
+    for (int b = 0; b < 3; ++b)
+      if (buttons_[b]) ImGui_ImplGlfw_MouseButtonCallback(window, b, GLFW_PRESS, 0);
+    if (wait_frames_ > 0) return void(--wait_frames_);
+    if (std::chrono::steady_clock::now() < wait_until_) return;
+    if (next_ >= lines_.size()) {
+      finished_ = true;
+      std::printf("input script: done\n");
+      std::fflush(stdout);
+      state.report_params = false;
+      return;
+    }
+    const std::string line = lines_[next_++];
+    std::string why = run(state, window, line);
+    if (why == kRetry && ++retries_ < 120) {
+      --next_;  // a widget not drawn yet (a panel opening): try again next frame
+      return;
+    }
+    retries_ = 0;
+    if (why == kRetry) why = "no widget of that name was drawn";
+    if (!why.empty()) {
+      std::fprintf(stderr, "input script: line %zu \"%s\": %s\n", next_, line.c_str(), why.c_str());
+      finished_ = true;
+    }
+  }
+
+ private:
+  static constexpr const char* kRetry = "retry";
+
+  std::string run(EditorState& state, GLFWwindow* window, const std::string& line) {
+    std::istringstream words(line);
+    std::string verb;
+    words >> verb;
+    if (verb.empty() || verb[0] == '#') return {};
+    if (verb == "wait") {
+      int frames = 0;
+      if (!(words >> frames) || frames < 1) return "expected a number of frames";
+      wait_frames_ = frames - 1;
+    } else if (verb == "wait-ms") {
+      int ms = 0;
+      if (!(words >> ms) || ms < 0) return "expected milliseconds";
+      wait_until_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
+    } else if (verb == "move") {
+      double x = 0, y = 0;
+      if (!(words >> x >> y)) return "expected x and y";
+      glfwSetCursorPos(window, x, y);
+    } else if (verb == "hover") {
+      std::string name;
+      double fx = 0.5, fy = 0.5;
+      if (!(words >> name)) return "expected a widget name";
+      words >> fx >> fy;
+      double rect[4];
+      if (!find_widget(name, rect)) return kRetry;
+      glfwSetCursorPos(window, rect[0] + fx * (rect[2] - rect[0]), rect[1] + fy * (rect[3] - rect[1]));
+    } else if (verb == "down" || verb == "up" || verb == "click") {
+      std::string name = "left";
+      words >> name;
+      const int b = name == "left" ? 0 : name == "right" ? 1 : name == "middle" ? 2 : -1;
+      if (b < 0) return "unknown mouse button " + name;
+      buttons_[b] = verb != "up";
+      ImGui_ImplGlfw_MouseButtonCallback(window, b, buttons_[b] ? GLFW_PRESS : GLFW_RELEASE, 0);
+      if (verb == "click") release_after_click_ = b;
+    } else if (verb == "key") {
+      std::string combo;
+      if (!(words >> combo)) return "expected a key";
+      std::vector<int> keys;
+      for (size_t start = 0; start <= combo.size();) {
+        const size_t plus = std::min(combo.find('+', start), combo.size());
+        const int key = key_code(combo.substr(start, plus - start));
+        if (key < 0) return "unknown key " + combo.substr(start, plus - start);
+        keys.push_back(key);
+        start = plus + 1;
+      }
+      for (int key : keys) ImGui_ImplGlfw_KeyCallback(window, key, 0, GLFW_PRESS, 0);
+      held_keys_ = keys;
+      merge_key_mods();
+    } else if (verb == "type") {
+      std::string text;
+      std::getline(words >> std::ws, text);
+      for (unsigned char c : text) ImGui_ImplGlfw_CharCallback(window, c);
+    } else if (verb == "print-frame") {
+      std::printf("frame %g\n", double(state.document.scene().render.frame));
+    } else if (verb == "print-value") {
+      std::string path;
+      std::vector<double> value;
+      if (!(words >> path) || !read_target(state.shown(), path, &value)) return "no parameter " + path;
+      std::printf("value %s", path.c_str());
+      for (double v : value) std::printf(" %.6g", v);
+      std::printf("\n");
+    } else if (verb == "print-keys") {
+      std::string path;
+      if (!(words >> path)) return "expected a parameter path";
+      std::printf("keys %s", path.c_str());
+      if (const TrackDesc* track = find_track(state.document.scene(), path))
+        for (const KeyDesc& key : track->keys) std::printf(" %g", key.frame);
+      std::printf("\n");
+    } else {
+      return "unknown command";
+    }
+    std::fflush(stdout);
+    return {};
+  }
+
+  // The backend's callbacks run between frames; run inside one, they change io.KeyCtrl
+  // and the others after NewFrame merged them into io.KeyMods, which EndFrame checks.
+  static void merge_key_mods() {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyMods = (io.KeyCtrl ? ImGuiKeyModFlags_Ctrl : 0) | (io.KeyShift ? ImGuiKeyModFlags_Shift : 0) |
+                 (io.KeyAlt ? ImGuiKeyModFlags_Alt : 0) | (io.KeySuper ? ImGuiKeyModFlags_Super : 0);
+  }
+
+  // GLFW key codes; ImGui 1.86 indexes its key array by them.
+  static int key_code(const std::string& name) {
+    static const std::pair<const char*, int> kNamed[] = {
+        {"ctrl", GLFW_KEY_LEFT_CONTROL}, {"shift", GLFW_KEY_LEFT_SHIFT}, {"alt", GLFW_KEY_LEFT_ALT},
+        {"space", GLFW_KEY_SPACE},       {"left", GLFW_KEY_LEFT},        {"right", GLFW_KEY_RIGHT},
+        {"up", GLFW_KEY_UP},             {"down", GLFW_KEY_DOWN},        {"escape", GLFW_KEY_ESCAPE},
+        {"enter", GLFW_KEY_ENTER},       {"tab", GLFW_KEY_TAB},          {"backspace", GLFW_KEY_BACKSPACE},
+        {"delete", GLFW_KEY_DELETE},     {"home", GLFW_KEY_HOME},        {"end", GLFW_KEY_END}};
+    for (const auto& [n, code] : kNamed)
+      if (name == n) return code;
+    if (name.size() == 1 && std::isalnum(static_cast<unsigned char>(name[0])))
+      return std::toupper(static_cast<unsigned char>(name[0]));
+    return -1;
+  }
+
+  // The rectangle the widget report gave `name` this frame.
+  static bool find_widget(const std::string& name, double rect[4]) {
+    std::istringstream report(widget_report::text());
+    std::string line;
+    while (std::getline(report, line)) {
+      std::istringstream words(line);
+      std::string n;
+      if (words >> n && n == name && words >> rect[0] >> rect[1] >> rect[2] >> rect[3]) return true;
+    }
+    return false;
+  }
+
+  std::vector<std::string> lines_;
+  size_t next_ = 0;
+  int wait_frames_ = 0;
+  std::chrono::steady_clock::time_point wait_until_;
+  int retries_ = 0;
+  std::vector<int> held_keys_;
+  bool buttons_[3] = {false, false, false};
+  int release_after_click_ = -1;
+  bool entered_ = false;
+  bool finished_ = false;
+};
+
 EditorApp::EditorApp(EditorOptions options)
     : options_(std::move(options)),
       renderer_(viewport_threads(options_.threads)),
@@ -59,6 +262,19 @@ EditorApp::EditorApp(EditorOptions options)
   // runs (--select, --screenshot) see it; files opened later are read in the background.
   if (!options_.scene.empty()) finish_open(options_.scene, load_scene(options_.scene, ReadFor::editing));
   state_.log.info("viewport renders on " + std::to_string(renderer_.threads()) + " threads");
+  if (!options_.input_script.empty()) {
+    std::ifstream in(options_.input_script);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    if (!in.eof()) {
+      // A test that cannot play its script must not pass on an editor that did nothing.
+      std::fprintf(stderr, "inkray: --input-script: cannot read %s\n", options_.input_script.string().c_str());
+      std::exit(2);
+    } else {
+      script_ = std::make_unique<InputScript>(std::move(lines));
+      state_.report_params = true;
+    }
+  }
 }
 
 EditorApp::~EditorApp() {
@@ -149,7 +365,7 @@ void EditorApp::save(bool choose_file) {
 }
 
 void EditorApp::frame_selected() {
-  const SceneDesc& scene = state_.document.scene();
+  const SceneDesc& scene = state_.shown();
   Point3 center(0.f);
   float radius = 1.f;
   if (state_.selection.kind == ItemKind::object && is_valid(scene, state_.selection)) {
@@ -160,7 +376,7 @@ void EditorApp::frame_selected() {
   } else {
     return;
   }
-  SceneDesc edited = scene;
+  SceneDesc edited = state_.document.scene();
   edited.camera = frame_sphere(scene.camera, center, radius);
   state_.edit(std::move(edited), "Frame selected");
 }
@@ -249,6 +465,18 @@ void EditorApp::shortcuts() {
     SceneDesc s = state_.document.scene();
     if (delete_item(s, state_.selection) && state_.edit_checked(std::move(s), "Delete")) state_.selection = {};
   }
+  // The frame, as in Blender: Space plays anywhere; the arrows step over the viewport and
+  // the timeline (Shift: to the shot's ends; up and down: to the next and previous key).
+  if (io.KeyCtrl || io.KeyAlt) return;
+  const auto pressed = [](ImGuiKey key, bool repeat) {
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), repeat);
+  };
+  if (!io.KeyShift && pressed(ImGuiKey_Space, false)) toggle_playback(state_);
+  if (!frames_hovered_) return;
+  if (pressed(ImGuiKey_LeftArrow, true)) io.KeyShift ? jump_to_end(state_, false) : step_frame(state_, -1);
+  if (pressed(ImGuiKey_RightArrow, true)) io.KeyShift ? jump_to_end(state_, true) : step_frame(state_, 1);
+  if (pressed(ImGuiKey_UpArrow, false)) jump_to_key(state_, 1);
+  if (pressed(ImGuiKey_DownArrow, false)) jump_to_key(state_, -1);
 }
 
 bool EditorApp::begin_panel(const char* name, Panel panel, const PanelRects& placed, int imgui_flags) {
@@ -279,6 +507,18 @@ void EditorApp::layout(float width, float height) {
                   kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
     viewport_frame_ = viewport_->draw(state_, renderer_);
   }
+  frames_hovered_ = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
+  ImGui::End();
+  ImGui::PopStyleVar();
+
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 3));
+  // No title bar and a fixed height: its first row is the transport.
+  if (begin_panel("Timeline", Panel::timeline, placed,
+                  kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
+                      ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
+    draw_timeline_panel(state_);
+  }
+  frames_hovered_ = frames_hovered_ || ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
   ImGui::End();
   ImGui::PopStyleVar();
 
@@ -556,8 +796,41 @@ void EditorApp::frame(float window_width, float window_height) {
   export_ui_.draw(state_);
   // A drag is one undo step: merging ends when no widget is held.
   if (!ImGui::IsAnyItemActive()) state_.document.end_merge();
+  advance_playback();
   sync_renderer();
   poll_background();
+  if (script_) {
+    widget_report::enable(true);  // the script finds widgets by their reports
+    script_->step(state_);
+  }
+}
+
+void EditorApp::advance_playback() {
+  const auto now = PlaybackClock::Clock::now();
+  const RenderSettings& r = state_.document.scene().render;
+  if (!state_.playing) {
+    was_playing_ = false;
+    return;
+  }
+  // Started, or the frame, range or rate changed by hand: count on from where it is.
+  const bool range_changed = r.frame_start != played_range_.frame_start ||
+                             r.frame_end != played_range_.frame_end || r.fps != played_range_.fps;
+  if (!was_playing_ || state_.scrubbing || double(r.frame) != played_frame_ || range_changed) {
+    playback_.start(r.frame, now);
+    played_frame_ = r.frame;
+    played_range_ = r;
+    was_playing_ = true;
+    if (state_.scrubbing) return;
+  }
+  // The next frame goes out once the viewport shows this one (or cannot show it): a
+  // frame slower than 1/fps is dropped, and playback never queues up behind the renderer.
+  const bool shown = viewport_->shown_revision() >= submitted_render_revision_ ||
+                     !state_.render_problems.empty() || sent_paused_;
+  if (!shown) return;
+  const double frame = playback_.frame_at(now, r);
+  if (frame == double(r.frame)) return;
+  state_.document.set_frame(frame);
+  played_frame_ = state_.document.scene().render.frame;
 }
 
 }  // namespace inkray

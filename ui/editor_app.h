@@ -14,6 +14,7 @@
 #include "ui/node_editor_panel.h"
 #include "ui/recent_files.h"
 #include "ui/scene_loader.h"
+#include "ui/timeline_panel.h"
 #include "ui/ui_settings.h"
 #include "ui/viewport_panel.h"
 
@@ -30,7 +31,12 @@ struct EditorOptions {
   int threads = 0;              // viewport render threads; 0: all but one core for the UI
   bool offer_recovery = true;
   std::chrono::seconds autosave_interval{120};
+  // Keys and mouse to play back, for tests (InputScript, editor_app.cpp): the editor's
+  // --input-script.
+  std::filesystem::path input_script;
 };
+
+class InputScript;
 
 class EditorApp {
  public:
@@ -86,6 +92,8 @@ class EditorApp {
   void dialogs();
   void sync_renderer();
   void poll_background();
+  // Moves the frame on while playing, by the clock, once the viewport shows the last one.
+  void advance_playback();
 
   void guarded(Pending action, std::filesystem::path file = {});  // asks about unsaved changes first
   void run(Pending action, const std::filesystem::path& file);
@@ -123,6 +131,14 @@ class EditorApp {
   bool show_load_errors_ = false;
   std::optional<Recovery> recovery_;
   bool quit_ = false;
+
+  // Playback and the keys that move the frame (over the viewport or the timeline).
+  PlaybackClock playback_;
+  bool was_playing_ = false;
+  double played_frame_ = 0.0;           // the frame playback last set
+  RenderSettings played_range_;         // the range and rate it counts in
+  bool frames_hovered_ = false;         // the viewport or the timeline, last frame
+  std::unique_ptr<InputScript> script_;
 
   // What the renderer has been told, to send only changes.
   uint64_t submitted_doc_revision_ = 0;

@@ -3,6 +3,7 @@
 // into renderer calls once per frame. No window or GL here.
 #pragma once
 
+#include "core/document/animation.h"
 #include "core/document/edit_checks.h"
 #include "core/render/progressive_renderer.h"
 #include "ui/document.h"
@@ -46,6 +47,27 @@ struct EditorState {
   bool want_export = false;
   bool want_node_editor = false;  // the properties panel's "Edit nodes"
 
+  // Playback (ui/timeline_panel.h): the shell advances the frame while it is on, and
+  // holds it while the timeline's frame is dragged.
+  bool playing = false;
+  bool scrubbing = false;
+  // Scripted runs: parameter widgets report where they are too (ui/widget_report.h),
+  // so a script can point at them.
+  bool report_params = false;
+
+  // The document as the viewport shows it: at its current frame. Panels draw and
+  // start their edits from it, so an animated parameter shows (and is edited at)
+  // the value it has there; edits still go to the document (Document::edit keys them).
+  const SceneDesc& shown() {
+    const SceneDesc& scene = document.scene();
+    if (scene.animation.empty()) return scene;
+    if (shown_revision_ != document.revision()) {
+      shown_ = scene_at_frame(scene, scene.render.frame);
+      shown_revision_ = document.revision();
+    }
+    return shown_;
+  }
+
   // Edits go through the document so they can be undone.
   void edit(SceneDesc after, std::string label, std::string merge_key = {}) {
     document.edit(std::move(after), std::move(label), std::move(merge_key), selection);
@@ -67,6 +89,10 @@ struct EditorState {
     edit(std::move(after), label);
     return true;
   }
+
+ private:
+  SceneDesc shown_;
+  uint64_t shown_revision_ = 0;
 };
 
 }  // namespace inkray

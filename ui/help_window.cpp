@@ -44,7 +44,20 @@ constexpr Shortcut kViewport[] = {
     {"W", "Cycle the gizmo: move, rotate, scale"},
     {"G / R / S", "Move / rotate / scale with the mouse; X, Y, Z constrain to an axis (again: free), digits "
                   "type the value ('-' negates), Ctrl snaps, click or Enter confirms, right click or Esc cancels"},
-    {"I", "Show or hide the statistics overlay"},
+    {"I", "Show or hide the statistics overlay (over a field, I keys it)"},
+};
+
+constexpr Shortcut kTimeline[] = {
+    {"Space", "Play / pause: from the current frame to the shot's last, then again from its first"},
+    {"Left / Right", "Previous / next frame (over the viewport or the timeline)"},
+    {"Shift+Left / Shift+Right", "First / last frame of the shot"},
+    {"Up / Down", "Next / previous frame with a key"},
+    {"Click, drag the timeline", "Go to that frame"},
+    {"I", "Key the field under the mouse at the current frame (or the one being edited)"},
+    {"Alt+I", "Delete that field's key at the current frame"},
+    {"Right click a field", "Insert key, delete key, clear all its keys"},
+    {"Edit an animated field", "Keys it at the current frame (a yellow diamond: a key here; green: "
+                               "animated, no key here)"},
 };
 
 constexpr Shortcut kNodes[] = {
@@ -61,6 +74,7 @@ constexpr Shortcut kNodes[] = {
 constexpr ShortcutGroup kGroups[] = {
     {"Documents", std::begin(kDocument), std::end(kDocument)},
     {"Viewport", std::begin(kViewport), std::end(kViewport)},
+    {"Timeline and keys", std::begin(kTimeline), std::end(kTimeline)},
     {"Node editor", std::begin(kNodes), std::end(kNodes)},
 };
 

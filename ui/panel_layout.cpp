@@ -23,6 +23,7 @@ const PanelRect& PanelRects::operator[](Panel p) const {
     case Panel::output: return output;
     case Panel::properties: return properties;
     case Panel::node_editor: return node_editor;
+    case Panel::timeline: return timeline;
   }
   return scene;
 }
@@ -51,24 +52,29 @@ PanelRects place_panels(const PanelLayout& stored, float width, float height, fl
   const float centre_w = std::max(width - scene_w - props_w, 1.f);
   const float right_x = scene_w + centre_w;
 
+  const float timeline_h = std::floor(kTimelineHeight * scale);
   PanelRects r;
   if (!node_editor_open) {
-    const float bottom_h =
-        std::floor(std::clamp(l.output_height * scale, kMinBottom * scale, std::max(body - kMinViewportHeight * scale, kMinBottom * scale)));
-    const float viewport_h = std::max(body - bottom_h, 1.f);
+    const float room = std::max(body - timeline_h - kMinViewportHeight * scale, kMinBottom * scale);
+    const float bottom_h = std::floor(std::clamp(l.output_height * scale, kMinBottom * scale, room));
+    const float viewport_h = std::max(body - bottom_h - timeline_h, 1.f);
     r.scene = {0, top, scene_w, body};
     r.viewport = {scene_w, top, centre_w, viewport_h};
-    r.output = {scene_w, top + viewport_h, centre_w, body - viewport_h};
+    r.timeline = {scene_w, top + viewport_h, centre_w, timeline_h};
+    r.output = {scene_w, top + viewport_h + timeline_h, centre_w, body - viewport_h - timeline_h};
     r.properties = {right_x, top, props_w, body};
     return r;
   }
   // The node editor spans the scene and viewport columns below them; the output tabs
   // move under the properties, since nodes need width more than the log does.
-  const float viewport_h = std::floor(std::clamp(body * l.node_split, kMinViewportHeight * scale * 0.75f, body * 0.85f));
+  // The split is the viewport's and the timeline's share together.
+  const float viewport_h = std::floor(
+      std::min(std::max(body * l.node_split, kMinViewportHeight * scale * 0.75f + timeline_h), body * 0.85f));
   const float bottom_h =
       std::floor(std::clamp(l.output_height * scale, kMinBottom * scale, std::max(body * 0.6f, kMinBottom * scale)));
   r.scene = {0, top, scene_w, viewport_h};
-  r.viewport = {scene_w, top, centre_w, viewport_h};
+  r.viewport = {scene_w, top, centre_w, std::max(viewport_h - timeline_h, 1.f)};
+  r.timeline = {scene_w, top + r.viewport.h, centre_w, timeline_h};
   r.node_editor = {0, top + viewport_h, right_x, body - viewport_h};
   r.properties = {right_x, top, props_w, body - bottom_h};
   r.output = {right_x, top + body - bottom_h, props_w, bottom_h};
@@ -88,7 +94,8 @@ PanelLayout resized(const PanelLayout& layout, Panel panel, const PanelRects& pl
   const auto scene_w = [&](float delta) { l.scene_width = (placed.scene.w + delta) / s; };
   const auto props_w = [&](float delta) { l.properties_width = (placed.properties.w + delta) / s; };
   const auto output_h = [&](float delta) { l.output_height = (placed.output.h + delta) / s; };
-  const auto split = [&](float delta) { l.node_split = (placed.viewport.h + delta) / std::max(body, 1.f); };
+  // The scene list is as tall as the viewport and the timeline under it.
+  const auto split = [&](float delta) { l.node_split = (placed.scene.h + delta) / std::max(body, 1.f); };
   switch (panel) {
     case Panel::scene:
       if (right_edge) scene_w(dw);
@@ -116,6 +123,8 @@ PanelLayout resized(const PanelLayout& layout, Panel panel, const PanelRects& pl
       if (top_edge) split(-dh);
       if (right_edge) props_w(-dw);
       break;
+    case Panel::timeline:
+      break;  // a fixed height, drawn without resize borders
   }
   return sanitized(l);
 }

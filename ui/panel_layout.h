@@ -1,5 +1,6 @@
 // Where the editor's panels sit: the scene list on the left, the viewport in the middle
-// with the output tabs (or the node editor) below it, the properties on the right.
+// with the timeline under it and the output tabs (or the node editor) below that, the
+// properties on the right. The timeline has a fixed height; the others are resizable.
 // Sizes are in points (pixels at UI scale 1), changed by dragging a panel's inner edge
 // and remembered between runs (ui/ui_settings.h). Window-free, so the arithmetic is tested.
 #pragma once
@@ -10,7 +11,10 @@ struct PanelRect {
   float x = 0, y = 0, w = 0, h = 0;
 };
 
-enum class Panel { scene, viewport, output, properties, node_editor };
+enum class Panel { scene, viewport, output, properties, node_editor, timeline };
+
+// The timeline's height in points: its toolbar, the frame ruler and two rows of keys.
+inline constexpr float kTimelineHeight = 100.f;
 
 struct PanelLayout {
   float scene_width = 280.f;
@@ -24,7 +28,7 @@ struct PanelLayout {
 // pixels high, at UI `scale`. Every panel keeps a usable minimum: when the window is
 // too small for the stored sizes, the side panels and the bottom panel give way first.
 struct PanelRects {
-  PanelRect scene, viewport, output, properties, node_editor;
+  PanelRect scene, viewport, output, properties, node_editor, timeline;
   const PanelRect& operator[](Panel p) const;
 };
 PanelRects place_panels(const PanelLayout& layout, float width, float height, float top, float scale,

@@ -1,7 +1,11 @@
 #include "ui/param_widgets.h"
 
+#include "core/document/animation.h"
+#include "core/document/animation_edit.h"
 #include "core/document/param_text.h"
 #include "ui/path_field.h"
+#include "ui/scene_edits.h"
+#include "ui/widget_report.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -35,6 +39,47 @@ const ImVec4 kProblemColour(1.f, 0.35f, 0.3f, 1.f);
 
 }  // namespace
 
+void draw_key_diamond(ImDrawList* draw, float x, float y, float r, unsigned fill, unsigned outline) {
+  const ImVec2 top(x, y - r), right(x + r, y), bottom(x, y + r), left(x - r, y);
+  if (fill != 0) draw->AddQuadFilled(top, right, bottom, left, fill);
+  if (outline != 0) draw->AddQuad(top, right, bottom, left, outline, std::max(1.f, r * 0.3f));
+}
+
+void ParamWidgets::key_marks(const Param& p) {
+  if (!keys || !keys->document) return;
+  const SceneDesc& doc = *keys->document;
+  std::string param = key_group;
+  param += (param.empty() || path_.empty() ? "" : ".") + path_;
+  param += (param.empty() || param.back() == '.' ? "" : ".") + std::string(p.name);
+  const std::string path = key_path(doc, key_item, param);
+  if (path.empty() || !animation_target(doc, path, nullptr)) return;
+  const KeyState state = key_state(doc, path, doc.render.frame);
+  if (state != KeyState::none) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    const float r = ImGui::GetFontSize() * 0.3f;
+    const float x = hi.x + ImGui::GetStyle().ItemInnerSpacing.x + r, y = 0.5f * (lo.y + hi.y);
+    if (state == KeyState::keyed) {
+      draw_key_diamond(ImGui::GetWindowDrawList(), x, y, r, kKeyFill, 0);
+    } else {
+      draw_key_diamond(ImGui::GetWindowDrawList(), x, y, r, 0, kAnimatedMark);
+    }
+  }
+  if (keys->report) widget_report::item("param:" + path);
+  if (ImGui::IsItemHovered()) keys->hovered = path;
+  if (ImGui::IsItemFocused()) keys->focused = path;
+  if (ImGui::BeginPopupContextItem(("keys:" + path).c_str())) {
+    using Action = KeyTargets::Action;
+    const auto choose = [&](Action a) { keys->action = a, keys->action_path = path; };
+    if (ImGui::MenuItem("Insert key", "I")) choose(Action::insert);
+    if (keys->report) widget_report::item("keys_menu.insert");
+    if (ImGui::MenuItem("Delete key", "Alt+I", false, state == KeyState::keyed)) choose(Action::remove);
+    if (keys->report) widget_report::item("keys_menu.delete");
+    if (ImGui::MenuItem("Clear keys", nullptr, false, state != KeyState::none)) choose(Action::clear);
+    if (keys->report) widget_report::item("keys_menu.clear");
+    ImGui::EndPopup();
+  }
+}
+
 void ParamWidgets::finish(const Param& p, bool typed_value) {
   if (ImGui::IsItemHovered() && hover_settled())
     ImGui::SetTooltip("%s", param_tooltip(p, typed_value).c_str());
@@ -57,6 +102,7 @@ void ParamWidgets::operator()(const Param& p, float& v) {
   } else {
     edited = ImGui::DragFloat(label_of(p).c_str(), &value, drag_speed(v, 0.01f), 0.f, 0.f, "%.4g");
   }
+  key_marks(p);
   finish(p, true);
   if (edited && value != v && std::isfinite(value)) v = float(clamp_to(p, value)), note(p);
 }
@@ -71,12 +117,14 @@ void ParamWidgets::operator()(const Param& p, int& v) {
     edited = ImGui::DragInt(label_of(p).c_str(), &value, drag_speed(float(v), 0.2f),
                             int(std::max(p.min, -2e9)), int(std::min(p.max, 2e9)));
   }
+  key_marks(p);
   finish(p, true);
   if (edited && value != v) v = int(clamp_to(p, value)), note(p);
 }
 
 void ParamWidgets::operator()(const Param& p, bool& v) {
   if (ImGui::Checkbox(label_of(p).c_str(), &v)) note(p);
+  key_marks(p);
   finish(p, false);
 }
 
@@ -94,6 +142,7 @@ void ParamWidgets::operator()(const Param& p, Vec3& v) {
     edited =
         ImGui::DragFloat3(label_of(p).c_str(), &value.x, drag_speed(largest, 0.01f) * 0.5f, 0.f, 0.f, "%.3f");
   }
+  key_marks(p);
   finish(p, true);
   // The document only ever holds what the reader accepts, so every save opens again.
   for (int i = 0; i < 3; ++i) value[i] = float(clamp_to(p, std::isfinite(value[i]) ? value[i] : v[i]));
@@ -217,6 +266,7 @@ bool ParamWidgets::choice_widget(const Param& p, int* index) {
     }
     ImGui::EndCombo();
   }
+  key_marks(p);
   finish(p, false);
   return edited;
 }

@@ -2,10 +2,12 @@
 // "The shape"): a visitor over visit_params that draws one ImGui widget per Param
 // with its label, slider range and plain-text tooltip (core/document/param_text.h),
 // and records which parameter changed. References are combos of the scene's names,
-// paths a field with a browse button (path_field.h).
+// paths a field with a browse button (path_field.h). Given a KeyTargets, keyable
+// fields show their keys and take I, Alt+I and a right-click menu.
 #pragma once
 
 #include "core/document/desc.h"
+#include "ui/selection.h"
 
 #include <string>
 #include <string_view>
@@ -13,7 +15,26 @@
 #include <variant>
 #include <vector>
 
+struct ImDrawList;
+
 namespace inkray {
+
+// Keys from the widgets (docs/architecture.md, "Timeline and keys"), shared by the
+// widgets of one panel: the document whose tracks mark the fields (at its current
+// frame), and what the user asked this frame, which the panel turns into edits.
+struct KeyTargets {
+  const SceneDesc* document = nullptr;
+  bool report = false;  // each keyable field reports itself as "param:PATH" (widget_report.h)
+  std::string hovered, focused;  // the keyable parameters under the mouse and with the focus, this frame
+  enum class Action { none, insert, remove, clear } action = Action::none;
+  std::string action_path;  // the parameter of a right-click menu's choice
+};
+
+// A key mark: filled when a key is on this frame, outlined when the parameter is
+// animated without one here (the timeline draws its keys with it too).
+void draw_key_diamond(ImDrawList* draw, float x, float y, float radius, unsigned fill, unsigned outline);
+inline constexpr unsigned kKeyFill = 0xFF28C8FFu;      // yellow (ImGui colours are ABGR)
+inline constexpr unsigned kAnimatedMark = 0xFF5AC86Eu;  // green
 
 struct ParamWidgets {
   // Context, set by the caller: where reference names and the scene's folder come
@@ -29,6 +50,12 @@ struct ParamWidgets {
   // undo merge key.
   std::string changed_param;
   bool changed_typed = false;  // it was typed text (a name or a path), kept while typing
+
+  // Keying, when `keys` is set: the item these are parameters of, and the groups
+  // between its path and theirs ("transform", "lines"), for key_path (scene_edits.h).
+  KeyTargets* keys = nullptr;
+  Selection key_item;
+  std::string key_group;
 
   void operator()(const Param& p, float& v);
   void operator()(const Param& p, int& v);
@@ -85,6 +112,8 @@ struct ParamWidgets {
   bool add_button();
   // The tooltip and, when it names this parameter, the problem in red.
   void finish(const Param& p, bool typed_value);
+  // The key mark beside a keyable field, its menu, and I / Alt+I while it is hovered.
+  void key_marks(const Param& p);
   void note(const Param& p) {
     changed = true;
     changed_param = path_ + std::string(p.name);

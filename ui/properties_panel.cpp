@@ -1,5 +1,6 @@
 #include "ui/properties_panel.h"
 
+#include "core/document/animation_edit.h"
 #include "core/document/graph_edit.h"
 #include "core/document/edit_checks.h"
 #include "core/document/param_text.h"
@@ -9,6 +10,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,9 +30,20 @@ std::string merge_key(const Selection& s, const std::string& param) {
   return std::to_string(int(s.kind)) + ":" + std::to_string(s.index) + ":" + param;
 }
 
-// The widgets' context for one item: the scene's names and folder, and that item's
-// last problem, shown beside its field.
-ParamWidgets widgets_for(const EditorState& state, const Selection& item, std::string_view self_name = {}) {
+// What the panel's widgets share while it is drawn: the editor's state, the document
+// at the current frame (the values shown), and the keys the fields ask for.
+struct Panel {
+  EditorState& state;
+  const SceneDesc& shown;
+  KeyTargets keys;
+};
+
+// The widgets' context for one item: the scene's names and folder, that item's last
+// problem, shown beside its field, and the item's keys (`group` sits between the
+// item's path and its parameters': "transform", "lines").
+ParamWidgets widgets_for(Panel& panel, const Selection& item, std::string_view group = {},
+                         std::string_view self_name = {}) {
+  const EditorState& state = panel.state;
   ParamWidgets widgets;
   widgets.scene = &state.document.scene();
   widgets.self_name = self_name;
@@ -38,6 +51,9 @@ ParamWidgets widgets_for(const EditorState& state, const Selection& item, std::s
     widgets.problem_param = state.problem_param;
     widgets.problem_message = state.problem_message;
   }
+  widgets.keys = &panel.keys;
+  widgets.key_item = item;
+  widgets.key_group = group;
   return widgets;
 }
 
@@ -70,11 +86,13 @@ Edited edit_item(Desc& desc, ParamWidgets widgets) {
 
 // A tagged variant's type combo and its alternative's widgets.
 template <class Variant>
-Edited edit_tagged_item(EditorState& state, const Selection& sel, const char* label, Variant& value) {
+Edited edit_tagged_item(Panel& panel, const Selection& sel, const char* label, Variant& value,
+                        std::string_view group = {}) {
   Edited edited;
   if (edit_variant_type(label, value)) edited = {true, false, "type"};
-  problem_beside(state, sel, "type");
-  std::visit([&](auto& alternative) { edited |= edit_item(alternative, widgets_for(state, sel)); }, value);
+  problem_beside(panel.state, sel, "type");
+  std::visit([&](auto& alternative) { edited |= edit_item(alternative, widgets_for(panel, sel, group)); },
+             value);
   return edited;
 }
 
@@ -140,14 +158,15 @@ void commit_named(EditorState& state, const Selection& sel, std::vector<T> Scene
 }
 
 // A name field: typed text, its problem beside it.
-bool edit_name(EditorState& state, const Selection& sel, std::string& name, std::string_view doc) {
-  ParamWidgets widgets = widgets_for(state, sel);
+bool edit_name(Panel& panel, const Selection& sel, std::string& name, std::string_view doc) {
+  ParamWidgets widgets = widgets_for(panel, sel);
   widgets(text("name", doc), name);
   return widgets.changed;
 }
 
 // The material's type and settings; a graph's nodes are the node editor's.
-Edited edit_material_data(EditorState& state, const Selection& sel, MaterialDesc& m) {
+Edited edit_material_data(Panel& panel, const Selection& sel, MaterialDesc& m) {
+  EditorState& state = panel.state;
   const MaterialVariant before = m.data;
   Edited edited;
   if (edit_variant_type("Type###type", m.data)) edited = {true, false, "type"};
@@ -160,7 +179,7 @@ Edited edit_material_data(EditorState& state, const Selection& sel, MaterialDesc
           ImGui::TextDisabled("%zu nodes, %zu links", data.nodes.size(), data.links.size());
         } else {
           // A mix offers the other materials: one of itself would be a cycle.
-          edited |= edit_item(data, widgets_for(state, sel, m.name));
+          edited |= edit_item(data, widgets_for(panel, sel, {}, m.name));
         }
       },
       m.data);
@@ -172,11 +191,12 @@ Edited edit_material_data(EditorState& state, const Selection& sel, MaterialDesc
 }
 
 // Scale with a lock: locked, editing one component scales all three alike (param_text.h).
-bool edit_scale(EditorState& state, const Selection& sel, Vec3& scale, std::string* param) {
+bool edit_scale(Panel& panel, const Selection& sel, Vec3& scale, std::string* param) {
   static constexpr Param kScale =
       vector("scale", "Scale along the object's own axes, applied first").labelled("Scale");
+  EditorState& state = panel.state;
   Vec3 edited = scale;
-  ParamWidgets widgets = widgets_for(state, sel);
+  ParamWidgets widgets = widgets_for(panel, sel, "transform");
   widgets(kScale, edited);
   ImGui::Checkbox("Uniform scale", &state.uniform_scale);
   if (ImGui::IsItemHovered())
@@ -192,18 +212,19 @@ bool edit_scale(EditorState& state, const Selection& sel, Vec3& scale, std::stri
   return true;
 }
 
-bool edit_transform(EditorState& state, const Selection& sel, TransformDesc& t, std::string* param) {
+bool edit_transform(Panel& panel, const Selection& sel, TransformDesc& t, std::string* param) {
   static constexpr Param kTranslate =
       vector("translate", "Moves the object, applied last").labelled("Position");
-  ParamWidgets translate = widgets_for(state, sel);
+  ParamWidgets translate = widgets_for(panel, sel, "transform");
   translate(kTranslate, t.translate);
   bool changed = translate.changed;
   if (changed) *param = "translate";
-  changed |= edit_scale(state, sel, t.scale, param);
+  changed |= edit_scale(panel, sel, t.scale, param);
   for (size_t i = 0; i < t.rotate.size(); ++i) {
     ImGui::PushID(int(i));
     std::string rotation_param;
-    if (edit_params(t.rotate[i], &rotation_param, widgets_for(state, sel)))
+    if (edit_params(t.rotate[i], &rotation_param,
+                    widgets_for(panel, sel, "transform.rotate." + std::to_string(i))))
       changed = true, *param = "rotate" + std::to_string(i) + rotation_param;
     if (ImGui::SmallButton("remove rotation")) {
       t.rotate.erase(t.rotate.begin() + long(i));
@@ -217,15 +238,16 @@ bool edit_transform(EditorState& state, const Selection& sel, TransformDesc& t, 
   return changed;
 }
 
-void material_section(EditorState& state, int index) {
+void material_section(Panel& panel, int index) {
+  EditorState& state = panel.state;
   const Selection sel{ItemKind::material, index};
-  MaterialDesc m = state.document.scene().materials[size_t(index)];
+  MaterialDesc m = panel.shown.materials[size_t(index)];
   ImGui::PushID("material");
   Edited edited;
-  if (edit_name(state, sel, m.name, "Unique material name")) edited = {true, true, "name"};
-  edited |= edit_material_data(state, sel, m);
+  if (edit_name(panel, sel, m.name, "Unique material name")) edited = {true, true, "name"};
+  edited |= edit_material_data(panel, sel, m);
   if (ImGui::TreeNode("Outline overrides")) {
-    edited |= edit_item(m.lines, widgets_for(state, sel));
+    edited |= edit_item(m.lines, widgets_for(panel, sel, "lines"));
     ImGui::TreePop();
   }
   ImGui::PopID();
@@ -246,21 +268,22 @@ struct WithoutGroups {
   }
 };
 
-void object_section(EditorState& state, int index) {
-  const SceneDesc& scene = state.document.scene();
+void object_section(Panel& panel, int index) {
+  EditorState& state = panel.state;
+  const SceneDesc& scene = panel.shown;
   const Selection sel{ItemKind::object, index};
   ObjectDesc o = scene.objects[size_t(index)];
-  ParamWidgets own = widgets_for(state, sel);
+  ParamWidgets own = widgets_for(panel, sel);
   WithoutGroups top{own};
   visit_params(o, top);
   Edited edited{own.changed, own.changed_typed, own.changed_param};
   section_title("Transform");
   std::string transform_param;
-  if (edit_transform(state, sel, o.transform, &transform_param)) edited = {true, false, transform_param};
+  if (edit_transform(panel, sel, o.transform, &transform_param)) edited = {true, false, transform_param};
   section_title("Shape");
-  edited |= edit_tagged_item(state, sel, "Shape###shape", o.shape);
+  edited |= edit_tagged_item(panel, sel, "Shape###shape", o.shape, "shape");
   if (ImGui::TreeNode("Outline overrides")) {
-    edited |= edit_item(o.lines, widgets_for(state, sel));
+    edited |= edit_item(o.lines, widgets_for(panel, sel, "lines"));
     ImGui::TreePop();
   }
   if (edited.changed) {
@@ -271,7 +294,7 @@ void object_section(EditorState& state, int index) {
   for (int m = 0; m < int(scene.materials.size()); ++m) {
     if (scene.materials[size_t(m)].name == scene.objects[size_t(index)].material) {
       section_title(("Material: " + scene.materials[size_t(m)].name).c_str());
-      material_section(state, m);
+      material_section(panel, m);
       break;
     }
   }
@@ -281,7 +304,7 @@ void object_section(EditorState& state, int index) {
     section_title(("Strokes: " + scene.strokes[size_t(e)].name).c_str());
     const Selection emitter_sel{ItemKind::emitter, e};
     StrokeEmitterDesc emitter = scene.strokes[size_t(e)];
-    ParamWidgets widgets = widgets_for(state, emitter_sel);
+    ParamWidgets widgets = widgets_for(panel, emitter_sel);
     visit_params(emitter, widgets);
     if (widgets.changed) {
       commit_named(state, emitter_sel, &SceneDesc::strokes, std::move(emitter), widgets.changed_param,
@@ -295,14 +318,15 @@ void object_section(EditorState& state, int index) {
 
 // Singletons (camera, render settings, outlines, environment) have no name to keep consistent.
 template <class T>
-void singleton_section(EditorState& state, ItemKind kind, T SceneDesc::*member) {
+void singleton_section(Panel& panel, ItemKind kind, T SceneDesc::*member) {
+  EditorState& state = panel.state;
   const Selection sel{kind, -1};
-  T value = state.document.scene().*member;
+  T value = panel.shown.*member;
   Edited edited;
   if constexpr (requires { std::variant_size<T>::value; }) {
-    edited = edit_tagged_item(state, sel, "Type###type", value);
+    edited = edit_tagged_item(panel, sel, "Type###type", value);
   } else {
-    edited = edit_item(value, widgets_for(state, sel));
+    edited = edit_item(value, widgets_for(panel, sel));
   }
   if (edited.changed) {
     SceneDesc scene = state.document.scene();
@@ -311,50 +335,95 @@ void singleton_section(EditorState& state, ItemKind kind, T SceneDesc::*member) 
   }
 }
 
+// I keys the field under the mouse (or, over the panel, the focused one) at the current
+// frame, Alt+I deletes its key there; the fields' menus ask the same.
+void apply_keys(Panel& panel) {
+  EditorState& state = panel.state;
+  KeyTargets& keys = panel.keys;
+  const ImGuiIO& io = ImGui::GetIO();
+  using Action = KeyTargets::Action;
+  std::string target = keys.hovered;
+  if (target.empty() && ImGui::IsWindowHovered(ImGuiHoveredFlags_RootAndChildWindows)) target = keys.focused;
+  const bool plain_i = !io.WantTextInput && !io.KeyCtrl && !io.KeyShift && ImGui::IsKeyPressed('I', false);
+  if (!target.empty() && plain_i) {
+    keys.action = io.KeyAlt ? Action::remove : Action::insert;
+    keys.action_path = target;
+  }
+  if (keys.action == Action::none) return;
+  SceneDesc scene = state.document.scene();
+  const double frame = scene.render.frame;
+  const std::string& path = keys.action_path;
+  char at[64];
+  std::snprintf(at, sizeof at, " at frame %g", frame);
+  switch (keys.action) {
+    case Action::insert:
+      if (key_shown_value(scene, path, frame)) state.edit(std::move(scene), "Insert key");
+      break;
+    case Action::remove:
+      if (unkey(scene, path, frame)) {
+        state.edit(std::move(scene), "Delete key");
+      } else {
+        state.log.info(path + " has no key" + at);
+      }
+      break;
+    case Action::clear:
+      if (clear_keys(scene, path)) state.edit(std::move(scene), "Clear keys");
+      break;
+    case Action::none: break;
+  }
+}
+
 }  // namespace
 
 void draw_properties_panel(EditorState& state) {
-  const SceneDesc& scene = state.document.scene();
+  Panel panel{state, state.shown(), {}};
+  panel.keys.document = &state.document.scene();
+  panel.keys.report = state.report_params;
+  const SceneDesc& scene = panel.shown;
   const Selection sel = validated(scene, state.selection);
   if (sel.kind == ItemKind::none) {
     ImGui::TextDisabled("Select an item in the scene graph or click the viewport.");
     return;
   }
   ImGui::Text("%s", item_name(scene, sel).c_str());
+  if (!scene.animation.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("at frame %g", double(scene.render.frame));
+  }
   ImGui::Separator();
   // Room for the longest labels ("Specular colour") at any interface size.
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.f);
   switch (sel.kind) {
     case ItemKind::camera:
-      singleton_section(state, sel.kind, &SceneDesc::camera);
+      singleton_section(panel, sel.kind, &SceneDesc::camera);
       break;
     case ItemKind::render:
-      singleton_section(state, sel.kind, &SceneDesc::render);
+      singleton_section(panel, sel.kind, &SceneDesc::render);
       break;
     case ItemKind::outlines:
-      singleton_section(state, sel.kind, &SceneDesc::outlines);
+      singleton_section(panel, sel.kind, &SceneDesc::outlines);
       break;
     case ItemKind::environment:
-      singleton_section(state, sel.kind, &SceneDesc::environment);
+      singleton_section(panel, sel.kind, &SceneDesc::environment);
       break;
     case ItemKind::object:
-      object_section(state, sel.index);
+      object_section(panel, sel.index);
       break;
     case ItemKind::material:
-      material_section(state, sel.index);
+      material_section(panel, sel.index);
       break;
     case ItemKind::light: {
       LightDesc light = scene.lights[size_t(sel.index)];
       Edited edited;
-      if (edit_name(state, sel, light.name, "Light name")) edited = {true, true, "name"};
-      edited |= edit_tagged_item(state, sel, "Type###type", light.data);
+      if (edit_name(panel, sel, light.name, "Light name")) edited = {true, true, "name"};
+      edited |= edit_tagged_item(panel, sel, "Type###type", light.data);
       if (edited.changed)
         commit_named(state, sel, &SceneDesc::lights, std::move(light), edited.param, edited.typed);
       break;
     }
     case ItemKind::emitter: {
       StrokeEmitterDesc emitter = scene.strokes[size_t(sel.index)];
-      ParamWidgets widgets = widgets_for(state, sel);
+      ParamWidgets widgets = widgets_for(panel, sel);
       visit_params(emitter, widgets);
       if (widgets.changed)
         commit_named(state, sel, &SceneDesc::strokes, std::move(emitter), widgets.changed_param,
@@ -365,6 +434,7 @@ void draw_properties_panel(EditorState& state) {
       break;
   }
   ImGui::PopItemWidth();
+  apply_keys(panel);
 }
 
 }  // namespace inkray

@@ -1,6 +1,7 @@
 #include "ui/scene_edits.h"
 
 #include "core/compiler/compile_objects.h"
+#include "core/document/animation_edit.h"
 #include "core/geometry/obj_loader.h"
 #include "ui/placement.h"
 
@@ -48,10 +49,23 @@ Selection add_object(SceneDesc& scene, std::string_view base, ShapeVariant shape
   return {ItemKind::object, int(scene.objects.size()) - 1};
 }
 
+// The section of the document a named item is listed in, as animation paths name it.
+std::string_view section_of(ItemKind kind) {
+  switch (kind) {
+    case ItemKind::object: return "objects";
+    case ItemKind::light: return "lights";
+    case ItemKind::material: return "materials";
+    case ItemKind::emitter: return "strokes";
+    default: return {};
+  }
+}
+
 template <class T>
 Selection duplicate_in(SceneDesc& scene, std::vector<T>& items, ItemKind kind, int index) {
   T copy = items[size_t(index)];
   copy.name = unique_name(scene, kind, copy.name);
+  const std::string_view section = section_of(kind);
+  copy_tracks(scene, entry_path(section, items[size_t(index)].name), entry_path(section, copy.name));
   items.insert(items.begin() + index + 1, std::move(copy));
   return {kind, index + 1};
 }
@@ -166,29 +180,36 @@ Selection duplicate_item(SceneDesc& scene, const Selection& item) {
 
 bool delete_item(SceneDesc& scene, const Selection& item) {
   if (!is_valid(scene, item)) return false;
+  const std::string tracks = key_path(scene, item);
   switch (item.kind) {
     case ItemKind::object: {
       const std::string name = scene.objects[size_t(item.index)].name;
       scene.objects.erase(scene.objects.begin() + item.index);
+      for (const StrokeEmitterDesc& e : scene.strokes)
+        if (e.object == name) delete_tracks(scene, entry_path("strokes", e.name));
       std::erase_if(scene.strokes, [&](const StrokeEmitterDesc& e) { return e.object == name; });
-      return true;
+      break;
     }
-    case ItemKind::light: scene.lights.erase(scene.lights.begin() + item.index); return true;
-    case ItemKind::emitter: scene.strokes.erase(scene.strokes.begin() + item.index); return true;
+    case ItemKind::light: scene.lights.erase(scene.lights.begin() + item.index); break;
+    case ItemKind::emitter: scene.strokes.erase(scene.strokes.begin() + item.index); break;
     case ItemKind::material: {
       const std::string& name = scene.materials[size_t(item.index)].name;
       const bool used = std::any_of(scene.objects.begin(), scene.objects.end(),
                                     [&](const ObjectDesc& o) { return o.material == name; });
       if (used) return false;  // objects would point at nothing
       scene.materials.erase(scene.materials.begin() + item.index);
-      return true;
+      break;
     }
     default: return false;
   }
+  delete_tracks(scene, tracks);
+  return true;
 }
 
 bool rename_item(SceneDesc& scene, const Selection& item, const std::string& name) {
   if (!is_valid(scene, item) || name.empty() || name_taken(scene, item.kind, name)) return false;
+  if (section_of(item.kind).empty()) return false;
+  rename_tracks(scene, key_path(scene, item), entry_path(section_of(item.kind), name));
   switch (item.kind) {
     case ItemKind::object: {
       std::string& old = scene.objects[size_t(item.index)].name;
@@ -216,6 +237,24 @@ bool rename_item(SceneDesc& scene, const Selection& item, const std::string& nam
     case ItemKind::emitter: scene.strokes[size_t(item.index)].name = name; return true;
     default: return false;
   }
+}
+
+std::string key_path(const SceneDesc& scene, const Selection& item, std::string_view param) {
+  if (!is_valid(scene, item)) return {};
+  std::string path;
+  switch (item.kind) {
+    case ItemKind::camera: path = "camera/"; break;
+    case ItemKind::render: path = "render/"; break;
+    case ItemKind::environment: path = "environment/"; break;
+    case ItemKind::outlines: path = "outlines/"; break;
+    case ItemKind::object: path = entry_path("objects", scene.objects[size_t(item.index)].name); break;
+    case ItemKind::light: path = entry_path("lights", scene.lights[size_t(item.index)].name); break;
+    case ItemKind::material: path = entry_path("materials", scene.materials[size_t(item.index)].name); break;
+    case ItemKind::emitter: path = entry_path("strokes", scene.strokes[size_t(item.index)].name); break;
+    case ItemKind::none: return {};
+  }
+  for (char c : param) path += c == '.' ? '/' : c;
+  return path;
 }
 
 bool set_visible(SceneDesc& scene, const Selection& item, bool visible) {

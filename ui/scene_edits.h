@@ -1,7 +1,7 @@
 // Structural edits of the scene document as pure functions: each takes a
 // SceneDesc and returns the edited copy, which the caller hands to
 // Document::edit so it becomes one undoable step. References by name
-// (object -> material, emitter -> object) are kept consistent.
+// (object -> material, emitter -> object) and animation tracks are kept consistent.
 #pragma once
 
 #include "ui/selection.h"
@@ -26,11 +26,20 @@ Selection add_point_light(SceneDesc& scene);
 Selection add_stroke_emitter(SceneDesc& scene, const std::string& object);
 Selection add_material(SceneDesc& scene);
 
+// The copy gets copies of the item's tracks.
 Selection duplicate_item(SceneDesc& scene, const Selection& item);
-// Deleting an object also deletes the stroke emitters growing on it.
+// Deleting an object also deletes the stroke emitters growing on it; tracks go with
+// what they animate.
 bool delete_item(SceneDesc& scene, const Selection& item);
-// Fails (returns false) when the name is empty or taken.
+// Fails (returns false) when the name is empty or taken. The item's tracks follow the name.
 bool rename_item(SceneDesc& scene, const Selection& item, const std::string& name);
+
+// The animation path (core/document/animation.h) of a parameter of the selected item:
+// key_path(scene, ball, "transform.translate") is "objects/ball/transform/translate";
+// groups are joined by '.' or '/'. Without a parameter, the start every path of the
+// item's own parameters shares ("objects/ball/", "camera/"); "" for no selection.
+// The timeline, the widgets and the keys all name parameters through it.
+std::string key_path(const SceneDesc& scene, const Selection& item, std::string_view param = {});
 bool set_visible(SceneDesc& scene, const Selection& item, bool visible);
 
 // The bounds of an object's shape before its transform (meshes: a unit box about the

@@ -152,7 +152,7 @@ void ViewportPanel::toolbar(EditorState& state) {
 
 void ViewportPanel::edit_transform(EditorState& state, int object, const TransformDesc& t, const char* label,
                                    const std::string& merge_key) {
-  if (state.document.scene().objects[size_t(object)].transform == t) return;
+  if (state.shown().objects[size_t(object)].transform == t) return;
   // No button is held through a G/R/S tool, so nothing keeps the merge open: its step
   // is replaced instead, while it is still the newest.
   if (merge_key.empty() && own_revision_ == state.document.revision()) state.document.discard_newest();
@@ -166,7 +166,7 @@ void ViewportPanel::restore_transform(EditorState& state, int object, const Tran
   if (own_revision_ != 0 && own_revision_ == state.document.revision()) {
     state.document.discard_newest();  // the drag's own step, still the newest: gone as if never made
   } else if (object < int(state.document.scene().objects.size()) &&
-             !(state.document.scene().objects[size_t(object)].transform == original)) {
+             !(state.shown().objects[size_t(object)].transform == original)) {
     SceneDesc edited = state.document.scene();
     edited.objects[size_t(object)].transform = original;
     state.edit(std::move(edited), "Cancel transform");
@@ -181,7 +181,7 @@ bool ViewportPanel::tool_input(EditorState& state, const ViewMapping& view, int 
     static constexpr int kKeys[3] = {'G', 'R', 'S'};
     for (int m = 0; m < 3; ++m) {
       if (!plain_key(kKeys[m])) continue;
-      tool_.begin(GizmoMode(m), state.document.scene().objects[size_t(object)], view,
+      tool_.begin(GizmoMode(m), state.shown().objects[size_t(object)], view,
                   Vec2(io.MousePos.x, io.MousePos.y));
       moving_object_ = object;
       own_revision_ = 0;
@@ -213,7 +213,7 @@ bool ViewportPanel::tool_input(EditorState& state, const ViewMapping& view, int 
     own_revision_ = 0;
   } else {
     edit_transform(state, object, tool_.transform(), label, {});
-    const GizmoFrame frame = gizmo_frame(state.document.scene().objects[size_t(object)], tool_.mode(), view);
+    const GizmoFrame frame = gizmo_frame(state.shown().objects[size_t(object)], tool_.mode(), view);
     ImDrawList* draw = ImGui::GetWindowDrawList();
     if (tool_.axis() >= 0) draw_axis_line(draw, frame, tool_.axis(), view);
     draw_header(draw, ImVec2(view.origin.x + 6.f, view.origin.y + 6.f), tool_.header());
@@ -228,7 +228,7 @@ bool ViewportPanel::gizmo_input(EditorState& state, const ViewMapping& view, int
     gizmo_drag_.reset();
     return false;
   }
-  const ObjectDesc& o = state.document.scene().objects[size_t(object)];
+  const ObjectDesc& o = state.shown().objects[size_t(object)];
   const GizmoFrame frame = gizmo_frame(o, gizmo_mode_, view);
   if (activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !state.region_tool) {
     const GizmoHandle handle = pick_handle(frame, gizmo_mode_, view, press_);
@@ -258,7 +258,7 @@ bool ViewportPanel::gizmo_input(EditorState& state, const ViewMapping& view, int
   }
   // Drawn from the document as edited this frame, so the gizmo stays under the mouse.
   draw_gizmo(ImGui::GetWindowDrawList(),
-             gizmo_frame(state.document.scene().objects[size_t(object)], gizmo_mode_, view), gizmo_mode_,
+             gizmo_frame(state.shown().objects[size_t(object)], gizmo_mode_, view), gizmo_mode_,
              view, hot);
   return gizmo_drag_.has_value();
 }
@@ -273,7 +273,8 @@ void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& 
   const bool hovered = ImGui::IsItemHovered();
   const bool active = ImGui::IsItemActive();
   const bool activated = ImGui::IsItemActivated();
-  const SceneDesc& scene = state.document.scene();
+  // What is on screen: the document at its frame. Edits start from it and go to the document.
+  const SceneDesc& scene = state.shown();
   const float image_width = float(std::max(scene.render.width, 1)),
               image_height = float(std::max(scene.render.height, 1));
   const float to_image = image_height / std::max(h, 1.f);  // window pixels -> image pixels
@@ -308,7 +309,7 @@ void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& 
                                         ImVec2(std::max(a.x, mouse.x), std::max(a.y, mouse.y)),
                                         IM_COL32(255, 200, 60, 255), 0.f, 0, 1.5f);
   } else if (navigating && active && !activated && moved && drag_distance_ > kClickSlop) {
-    CameraDesc camera = scene.camera;
+    CameraDesc camera = state.shown().camera;
     const bool pan_drag = ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
                           (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift);
     if (pan_drag) {
@@ -318,13 +319,13 @@ void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& 
     } else if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
       camera = controller_.drag_orbit(camera, io.MouseDelta.x, io.MouseDelta.y);
     }
-    SceneDesc edited = scene;
+    SceneDesc edited = state.document.scene();
     edited.camera = camera;
     state.edit(std::move(edited), "Move camera", kNavMergeKey);
   }
   if (!tool_running && hovered && io.MouseWheel != 0.f) {
     SceneDesc edited = state.document.scene();
-    edited.camera = controller_.wheel(edited.camera, io.MouseWheel);
+    edited.camera = controller_.wheel(state.shown().camera, io.MouseWheel);
     state.edit(std::move(edited), "Dolly camera");
   }
   if (ImGui::IsItemDeactivated()) {
@@ -344,7 +345,7 @@ void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& 
         if (io.KeyCtrl) {
           if (hit.object >= 0) {
             SceneDesc edited = state.document.scene();
-            edited.camera = focus_at(edited.camera, hit.depth);
+            edited.camera = focus_at(state.shown().camera, hit.depth);
             state.edit(std::move(edited), "Focus");
             state.log.info("focus distance " + std::to_string(hit.depth));
           }

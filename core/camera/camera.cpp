@@ -6,33 +6,84 @@
 
 namespace inkray {
 
-Camera::Camera(const CameraDesc& desc, int width, int height)
-    : origin_(desc.look_from), width_(float(width)), height_(float(height)) {
-  w_ = glm::normalize(desc.look_at - desc.look_from);
-  u_ = glm::normalize(glm::cross(w_, desc.up));
-  v_ = glm::cross(u_, w_);
-  half_height_ = std::tan(glm::radians(desc.vfov) * 0.5f);
-  half_width_ = half_height_ * width_ / height_;
-  lens_radius_ = desc.aperture * 0.5f;
-  focus_distance_ = desc.focus_distance > 0.f ? desc.focus_distance : glm::length(desc.look_at - desc.look_from);
+Camera::Camera(const CameraDesc& desc, int width, int height) : width_(float(width)), height_(float(height)) {
+  view_ = make_view(desc);
 }
 
-Ray Camera::generate_ray(Vec2 film, Vec2 lens) const {
-  const float sx = (2.f * film.x / width_ - 1.f) * half_width_;
-  const float sy = (1.f - 2.f * film.y / height_) * half_height_;
-  const Vec3 dir = w_ + sx * u_ + sy * v_;  // reaches the plane at distance 1
-  if (lens_radius_ <= 0.f) return {origin_, glm::normalize(dir)};
-  const Vec2 l = lens_radius_ * sample_uniform_disk_concentric(lens);
-  const Point3 lens_point = origin_ + l.x * u_ + l.y * v_;
-  const Point3 focus_point = origin_ + focus_distance_ * dir;
-  return {lens_point, glm::normalize(focus_point - lens_point)};
+Camera::Camera(const CameraDesc& desc, const CameraDesc& open, const CameraDesc& close, int width, int height,
+               float frame_time)
+    : Camera(desc, width, height) {
+  frame_time_ = glm::clamp(frame_time, 0.f, 1.f);
+  if (open == close) return;
+  // A focus distance of 0 means "on look_at": resolved at each end, so the focus
+  // follows the target between them.
+  std::array<CameraDesc, 2> ends = {open, close};
+  for (CameraDesc& end : ends)
+    if (!(end.focus_distance > 0.f)) end.focus_distance = glm::length(end.look_at - end.look_from);
+  motion_ = ends;
+}
+
+Camera::View Camera::make_view(const CameraDesc& desc) const {
+  View view;
+  view.origin = desc.look_from;
+  view.w = glm::normalize(desc.look_at - desc.look_from);
+  view.u = glm::normalize(glm::cross(view.w, desc.up));
+  view.v = glm::cross(view.u, view.w);
+  view.half_height = std::tan(glm::radians(desc.vfov) * 0.5f);
+  view.half_width = view.half_height * width_ / height_;
+  view.lens_radius = desc.aperture * 0.5f;
+  view.focus_distance =
+      desc.focus_distance > 0.f ? desc.focus_distance : glm::length(desc.look_at - desc.look_from);
+  return view;
+}
+
+// Inline: a still camera's ray costs what it did before cameras could move.
+inline Ray Camera::ray_from(const View& view, Vec2 film, Vec2 lens, float time) const {
+  const float sx = (2.f * film.x / width_ - 1.f) * view.half_width;
+  const float sy = (1.f - 2.f * film.y / height_) * view.half_height;
+  const Vec3 dir = view.w + sx * view.u + sy * view.v;  // reaches the plane at distance 1
+  if (view.lens_radius <= 0.f) return {view.origin, glm::normalize(dir), time};
+  const Vec2 l = view.lens_radius * sample_uniform_disk_concentric(lens);
+  const Point3 lens_point = view.origin + l.x * view.u + l.y * view.v;
+  const Point3 focus_point = view.origin + view.focus_distance * dir;
+  return {lens_point, glm::normalize(focus_point - lens_point), time};
+}
+
+Ray Camera::generate_ray(Vec2 film, Vec2 lens, float time) const {
+  if (motion_) [[unlikely]]
+    return moving_ray(film, lens, time);
+  return ray_from(view_, film, lens, time);
+}
+
+Camera::View Camera::view_at(float time) const {
+  const CameraDesc& a = (*motion_)[0];
+  const CameraDesc& b = (*motion_)[1];
+  CameraDesc now;
+  now.look_from = glm::mix(a.look_from, b.look_from, time);
+  now.look_at = glm::mix(a.look_at, b.look_at, time);
+  now.up = glm::mix(a.up, b.up, time);
+  now.vfov = glm::mix(a.vfov, b.vfov, time);
+  now.aperture = glm::mix(a.aperture, b.aperture, time);
+  now.focus_distance = glm::mix(a.focus_distance, b.focus_distance, time);
+  return make_view(now);
+}
+
+Ray Camera::moving_ray(Vec2 film, Vec2 lens, float time) const { return ray_from(view_at(time), film, lens, time); }
+
+Camera Camera::at(float time) const {
+  if (!motion_) return *this;
+  Camera still = *this;
+  still.view_ = view_at(time);
+  still.motion_.reset();
+  still.frame_time_ = time;
+  return still;
 }
 
 bool Camera::project(const Point3& p, Vec2* film) const {
-  const Vec3 d = p - origin_;
-  const float z = glm::dot(d, w_);
+  const Vec3 d = p - view_.origin;
+  const float z = glm::dot(d, view_.w);
   if (z <= 0.f) return false;
-  const float sx = glm::dot(d, u_) / z / half_width_, sy = glm::dot(d, v_) / z / half_height_;
+  const float sx = glm::dot(d, view_.u) / z / view_.half_width, sy = glm::dot(d, view_.v) / z / view_.half_height;
   *film = {(sx + 1.f) * 0.5f * width_, (1.f - sy) * 0.5f * height_};
   return true;
 }

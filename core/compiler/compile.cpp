@@ -3,6 +3,8 @@
 // reuses what the last compile built when the document's changes leave it valid.
 #include "core/compiler/compile.h"
 
+#include "core/document/animation.h"
+
 #include "core/compiler/compile_lights.h"
 #include "core/compiler/compile_materials.h"
 #include "core/compiler/compile_objects.h"
@@ -39,11 +41,47 @@ size_t material_source(const SceneDesc& desc, const ObjectDesc& obj) {
   return 0;
 }
 
+// What can move while the shutter is open, the camera and the objects' transforms
+// (docs/architecture.md, "Motion blur"), as the document has them at its opening and
+// closing; lights, materials and the rest are read at the frame. Set only when the
+// shutter is open for a time and a track changes within it. The frame's document
+// carries its tracks, so it gives both.
+struct Shutter {
+  SceneDesc open, close;  // their camera and objects
+};
+SceneDesc moving_parts_at(const SceneDesc& desc, double frame) {
+  SceneDesc at;
+  at.camera = desc.camera;
+  at.objects = desc.objects;
+  for (const TrackDesc& track : desc.animation)
+    if (track.target.starts_with("camera/") || track.target.starts_with("objects/")) at.animation.push_back(track);
+  apply_animation(at, frame);
+  return at;
+}
+std::optional<Shutter> shutter_states(const SceneDesc& desc) {
+  const RenderSettings& r = desc.render;
+  if (!r.motion_blur() || desc.animation.empty()) return std::nullopt;
+  const double open = double(r.frame) + double(r.shutter_open), close = double(r.frame) + double(r.shutter_close);
+  if (!animated_between(desc, open, close)) return std::nullopt;
+  return Shutter{moving_parts_at(desc, open), moving_parts_at(desc, close)};
+}
+
 // What every compiled scene of the document carries whatever changed.
-void set_view(const SceneDesc& desc, RenderScene& scene) {
+void set_view(const SceneDesc& desc, const std::optional<Shutter>& shutter, RenderScene& scene) {
   scene.settings = desc.render;
   scene.outlines = desc.outlines;
-  scene.camera = Camera(desc.camera, desc.render.width, desc.render.height);
+  const RenderSettings& r = desc.render;
+  // The frame's own instant in the shutter, which rays without a time of their own see.
+  const float frame_time = r.motion_blur() ? -r.shutter_open / (r.shutter_close - r.shutter_open) : 0.f;
+  scene.camera = shutter ? Camera(desc.camera, shutter->open.camera, shutter->close.camera, r.width, r.height,
+                                  frame_time)
+                         : Camera(desc.camera, r.width, r.height);
+}
+
+// Whether object `index` (visible at the frame) moves while the shutter is open.
+bool moves(const std::optional<Shutter>& shutter, size_t index) {
+  return shutter && index < shutter->open.objects.size() && index < shutter->close.objects.size() &&
+         shutter->open.objects[index].transform != shutter->close.objects[index].transform;
 }
 
 // Crease lines compare smooth patches (docs/architecture.md, "Mesh normals and
@@ -119,7 +157,18 @@ StageSet SceneCompiler::changed_files(const SceneDesc& desc, std::map<std::strin
   return changes;
 }
 
-CompileResult SceneCompiler::compile(const SceneDesc& desc, const CompileOptions& options) {
+CompileResult SceneCompiler::compile(const SceneDesc& document, const CompileOptions& options) {
+  // An animated document is compiled as it stands at its current frame; its changes
+  // are those of that picture, so a frame step moves what moved and nothing else.
+  std::optional<SceneDesc> at_frame;
+  if (!document.animation.empty()) at_frame = scene_at_frame(document, document.render.frame);
+  const SceneDesc& desc = at_frame ? *at_frame : document;
+  rest_ = nullptr;
+  std::optional<SceneDesc> rest;
+  if (!document.animation.empty() && !document.strokes.empty()) {
+    rest = scene_at_frame(document, document.render.frame_start);
+    rest_ = &*rest;
+  }
   assets_.serve_stand_ins(options.stand_in_for_missing_assets);
   if (!options.stand_in_for_missing_assets) return compile_world(desc, options, {});
   const std::vector<AssetReference> references = list_asset_references(desc);
@@ -161,6 +210,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   ++counters_.checks;
   counters_.files_read = assets_.files_read();
   if (!result.errors.empty()) return result;
+  const std::optional<Shutter> shutter = shutter_states(desc);
 
   const auto remember = [&](std::shared_ptr<RenderScene> scene, size_t document_materials) {
     last_desc_ = desc;
@@ -176,7 +226,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
     // Nothing of the world changed: a new view of the same one, with the crease
     // patches of a new threshold.
     auto scene = std::make_shared<RenderScene>(*last_);
-    set_view(desc, *scene);
+    set_view(desc, shutter, *scene);
     if (!same_crease_patches(last_->outlines, desc.outlines))
       set_crease_patches(desc.outlines, placed_, *scene, assets_);
     remember(std::move(scene), last_document_materials_);
@@ -184,7 +234,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   }
 
   auto scene = std::make_shared<RenderScene>();
-  set_view(desc, *scene);
+  set_view(desc, shutter, *scene);
   std::vector<std::vector<std::string>> material_keys = material_keys_;
   if (!last_ || result.changes.has(Stage::material)) {
     // Only the materials whose description changed are compiled again.
@@ -208,7 +258,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   for (size_t i = 0; i < scene->material_names.size(); ++i) material_index[scene->material_names[i]] = uint32_t(i);
 
   ObjectBuild objects{assets_, counters_, desc.base_dir, options.stand_in_for_missing_assets};
-  std::vector<std::string> object_keys;
+  std::vector<StrokeAnchor> anchors;
   std::vector<std::shared_ptr<const PlacedShape>> placed_objects;
   for (size_t i = 0; i < desc.objects.size(); ++i) {
     if ((i & 255) == 0 && cancelled()) return result;
@@ -230,19 +280,44 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
       result.errors.push_back(where + placed->problem);
       continue;
     }
-    scene->geometry.add(placed->bvh, placed->to_world, placed->world);
     const Transform to_world = transform_from_desc(obj.transform);
+    if (moves(shutter, i)) {
+      // Traced where it stands at each ray's instant; lights and strokes read it at
+      // the frame (docs/architecture.md, "Motion blur").
+      const MovingShape moving =
+          place_moving(obj, *placed, shutter->open.objects[i].transform, shutter->close.objects[i].transform, objects);
+      if (!moving.problem.empty()) {
+        result.errors.push_back(where + "while the shutter is open, " + moving.problem);
+        continue;
+      }
+      scene->geometry.add_moving(moving.bvh, moving.open, moving.close, nullptr, placed->world);
+    } else {
+      scene->geometry.add(placed->bvh, placed->to_world, placed->world);
+    }
     scene->objects.push_back({obj.name, mat->second, -1, uint32_t(i), mat->second,
                               combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines),
-                              Transform{to_world.inv, to_world.m}});
-    object_keys.push_back(std::move(key));
+                              Transform{to_world.inv, to_world.m}, Transform{}});
+    anchors.push_back(stroke_anchor(obj, i, *placed, std::move(key), objects));
+    if (!anchors.back().world) {
+      result.errors.push_back(where + "cannot be placed as it stands at frame " +
+                              std::to_string(desc.render.frame_start) + ", where its strokes grow");
+      continue;
+    }
+    if (moves(shutter, i)) {
+      // Strokes grown at rest ride along: from rest to the object's own space, then
+      // out again as it stands at the shutter's opening and closing.
+      StrokeAnchor& anchor = anchors.back();
+      anchor.moving = true;
+      anchor.rest_to_open = transform_from_desc(shutter->open.objects[i].transform) * anchor.to_object;
+      anchor.rest_to_close = transform_from_desc(shutter->close.objects[i].transform) * anchor.to_object;
+    }
     placed_objects.push_back(placed);
   }
   if (!result.errors.empty()) return result;
   // Strokes grow on the compiled objects and join the same BVH.
   if (cancelled()) return result;
   StrokeBuild strokes{assets_, counters_, options.cancel};
-  compile_strokes(desc, *scene, object_keys, strokes, result.errors);
+  compile_strokes(desc, *scene, anchors, strokes, result.errors);
   if (cancelled() || !result.errors.empty()) return result;
   set_crease_patches(desc.outlines, placed_objects, *scene, assets_);
   // Objects that moved, appeared or changed shape need a new top level; else the
@@ -266,6 +341,20 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   placed_ = std::move(placed_objects);
   remember(std::move(scene), document_materials);
   return result;
+}
+
+StrokeAnchor SceneCompiler::stroke_anchor(const ObjectDesc& obj, size_t index, const PlacedShape& placed,
+                                          std::string key, ObjectBuild& build) const {
+  const Transform now = transform_from_desc(obj.transform);
+  const ObjectDesc* rest = rest_ && index < rest_->objects.size() ? &rest_->objects[index] : nullptr;
+  if (!rest || rest->transform == obj.transform) {
+    return {std::move(key), placed.world, Transform{now.inv, now.m}, Transform{}};
+  }
+  std::string rest_key, error;
+  const auto at_rest = place_object(*rest, build, &rest_key, &error);
+  if (!at_rest || !at_rest->problem.empty()) return {};
+  const Transform then = transform_from_desc(rest->transform);
+  return {std::move(rest_key), at_rest->world, Transform{then.inv, then.m}, now * Transform{then.inv, then.m}};
 }
 
 CompileResult compile_scene(const SceneDesc& desc, const CompileOptions& options) {

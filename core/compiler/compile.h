@@ -22,6 +22,8 @@
 namespace inkray {
 
 struct PlacedShape;
+struct ObjectBuild;
+struct StrokeAnchor;
 
 struct CompileOptions {
   Cancel cancel;                  // checked between objects and inside stroke building
@@ -56,6 +58,7 @@ class SceneCompiler {
   // limit (memory_budget.h); transformed geometry must lie within kMaxWorldCoordinate
   // of the origin. What the last successful compile built is reused where the
   // document's changes leave it valid.
+  // An animated document is compiled at its render.frame (document/animation.h).
   CompileResult compile(const SceneDesc& desc, const CompileOptions& options = {});
 
   const CompileCounters& counters() const { return counters_; }
@@ -69,8 +72,13 @@ class SceneCompiler {
   CompileResult compile_world(const SceneDesc& desc, const CompileOptions& options,
                               const std::vector<AssetReference>& references);
 
+  // Where object `index`'s strokes grow: its place at the shot's first frame.
+  StrokeAnchor stroke_anchor(const ObjectDesc& obj, size_t index, const PlacedShape& placed, std::string key,
+                             ObjectBuild& build) const;
+
   AssetCache assets_;
   CompileCounters counters_;
+  const SceneDesc* rest_ = nullptr;  // the document at frame_start, while a compile of strokes needs it
   std::optional<SceneDesc> last_desc_;  // the document last_ was compiled from
   std::shared_ptr<const RenderScene> last_;
   size_t last_document_materials_ = 0;  // last_->materials before the stroke materials

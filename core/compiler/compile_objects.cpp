@@ -23,10 +23,8 @@ void shape_bounds(const Shape& shape, Point3* lo, Point3* hi) {
   }
 }
 
-// Empty when the shape lies within kMaxWorldCoordinate, else why not.
-std::string world_extent_problem(const Shape& shape) {
-  Point3 lo, hi;
-  shape_bounds(shape, &lo, &hi);
+// Empty when bounds lie within kMaxWorldCoordinate, else why not.
+std::string extent_problem(const Point3& lo, const Point3& hi) {
   const float reach = std::max(max_component(glm::abs(lo)), max_component(glm::abs(hi)));
   if (std::isfinite(reach) && reach <= kMaxWorldCoordinate) return {};
   char text[160];
@@ -35,6 +33,24 @@ std::string world_extent_problem(const Shape& shape) {
                 "(scale it down or move it closer)",
                 double(reach), double(kMaxWorldCoordinate));
   return text;
+}
+
+std::string world_extent_problem(const Shape& shape) {
+  Point3 lo, hi;
+  shape_bounds(shape, &lo, &hi);
+  return extent_problem(lo, hi);
+}
+
+// Bounds of object-space bounds [lo, hi] moved by `t`: of their eight corners.
+void moved_bounds(const Transform& t, Point3* lo, Point3* hi) {
+  const Point3 a = *lo, b = *hi;
+  *lo = Point3(std::numeric_limits<float>::infinity());
+  *hi = -*lo;
+  for (int c = 0; c < 8; ++c) {
+    const Point3 p = t.point(Point3(c & 1 ? b.x : a.x, c & 2 ? b.y : a.y, c & 4 ? b.z : a.z));
+    *lo = glm::min(*lo, p);
+    *hi = glm::max(*hi, p);
+  }
 }
 
 // The mesh of a mesh-like shape in object space; null with *error for an unreadable file.
@@ -163,6 +179,32 @@ std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, Object
     ++build.counters.shape_bvhs;
   }
   return place_mesh(std::move(bvh), to_world, *key, bvh_key, "features|" + source_key, build);
+}
+
+MovingShape place_moving(const ObjectDesc& object, const PlacedShape& placed, const TransformDesc& open,
+                         const TransformDesc& close, ObjectBuild& build) {
+  MovingShape moving{placed.bvh, transform_from_desc(open), transform_from_desc(close), {}};
+  if (const auto* sphere = std::get_if<SphereDesc>(&object.shape)) {
+    const std::string key = "bvh|object space|shape|" + param_key(object.shape);
+    moving.bvh = build.assets.find<ShapeBvh>(key);
+    if (!moving.bvh) {
+      moving.bvh = build.assets.keep(key, std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(
+                                              Sphere{sphere->center, sphere->radius, Transform{}})));
+      ++build.counters.shape_bvhs;
+    }
+  }
+  // Anything a transform in between reaches lies within the bounds at both ends,
+  // grown by the turn; each end must stay within the limit, with room to turn.
+  Point3 object_lo, object_hi;
+  shape_bounds(moving.bvh->shape(), &object_lo, &object_hi);
+  for (const Transform* end : {&moving.open, &moving.close}) {
+    Point3 lo = object_lo, hi = object_hi;
+    moved_bounds(*end, &lo, &hi);
+    const Vec3 turn(glm::length(hi - lo));
+    moving.problem = extent_problem(lo - turn, hi + turn);
+    if (!moving.problem.empty()) break;
+  }
+  return moving;
 }
 
 std::shared_ptr<const std::vector<uint32_t>> crease_patches(const PlacedShape& placed, float threshold_degrees,

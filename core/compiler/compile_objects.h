@@ -41,6 +41,21 @@ struct ObjectBuild {
 std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build, std::string* key,
                                                 std::string* error);
 
+// An object that moves while the shutter is open (docs/architecture.md, "Motion
+// blur"): its shape in its own space, traced by a BVH that an instance places at the
+// shutter's opening and closing.
+struct MovingShape {
+  std::shared_ptr<const ShapeBvh> bvh;  // the shape in the object's own space
+  Transform open, close;
+  std::string problem;  // why it cannot be placed (reaching too far at either end), else empty
+};
+
+// The object `placed` (place_object, at the frame) moving from transform `open` to
+// `close`. A mesh's BVH is the placed one; a sphere, whose placed BVH holds its
+// transform, gets one in its own space, kept in the cache.
+MovingShape place_moving(const ObjectDesc& object, const PlacedShape& placed, const TransformDesc& open,
+                         const TransformDesc& close, ObjectBuild& build);
+
 // The smooth patch of each triangle of a placed mesh, quad or box at a crease
 // threshold in degrees (smooth_patches, mesh_features.h); null for a sphere. The
 // feature edges are found once per shape and the patches once per threshold, both

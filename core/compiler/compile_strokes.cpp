@@ -86,7 +86,7 @@ bool described_object(const SceneDesc& desc, const std::string& name) {
 // Builds one emitter's strokes; nullopt when there is nothing to build or on an
 // error (appended to errors).
 std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderScene& scene,
-                                          std::span<const std::string> object_keys, size_t index,
+                                          std::span<const StrokeAnchor> anchors, size_t index,
                                           StrokeBuild& build, std::vector<std::string>& errors) {
   const Cancel& cancel = build.cancel;
   const StrokeEmitterDesc& e = desc.strokes[index];
@@ -106,10 +106,10 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
     return std::nullopt;
   }
   const bool stand_in = brush == stand_in_brush();
-  BuiltStrokes built{&e, *object, shape_key(desc, e, object_keys[*object], stand_in), nullptr, stand_in};
+  BuiltStrokes built{&e, *object, shape_key(desc, e, anchors[*object].key, stand_in), nullptr, stand_in};
   built.shape = build.assets.find<StrokeShape>(built.key);
   if (!built.shape) {
-    const auto surface = StrokeSurface::from_shape(scene.geometry.shape(*object), &error);
+    const auto surface = StrokeSurface::from_shape(*anchors[*object].world, &error);
     if (!surface) {
       errors.push_back(where + "object \"" + e.object + "\": " + error);
       return std::nullopt;
@@ -121,7 +121,7 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
     // Painted in the colours of this compile, which later compiles reuse while they hold.
     const RenderObject& base = scene.objects[*object];
     const std::vector<Color> colors =
-        stroke_colors(scene.materials, base.material, shape->roots, e, base.to_object);
+        stroke_colors(scene.materials, base.material, shape->roots, e, anchors[*object].to_object);
     StrokeGeometry geometry = build_stroke_mesh(*surface, shape->roots, colors, e, cancel);
     if (cancel.requested()) return std::nullopt;  // unfinished ribbons are never cached
     mask->triangles = std::move(geometry.alpha);
@@ -144,14 +144,14 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
 
 }  // namespace
 
-void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const std::string> object_keys,
+void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const StrokeAnchor> anchors,
                      StrokeBuild& build, std::vector<std::string>& errors) {
   if (desc.strokes.empty()) return;
   // Build everything before adding any: the surfaces refer to the base objects'
   // meshes, which adding shapes may move.
   std::vector<BuiltStrokes> built;
   for (size_t i = 0; i < desc.strokes.size() && !build.cancel.requested(); ++i)
-    if (auto b = build_emitter(desc, scene, object_keys, i, build, errors)) built.push_back(std::move(*b));
+    if (auto b = build_emitter(desc, scene, anchors, i, build, errors)) built.push_back(std::move(*b));
   if (!errors.empty() || build.cancel.requested()) return;
   for (BuiltStrokes& b : built) {
     const uint32_t material = uint32_t(scene.materials.size());
@@ -165,6 +165,8 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
     object.name = b.emitter->name;
     object.material = material;
     object.light = -1;
+    const StrokeAnchor& anchor = anchors[b.base_object];
+    if (anchor.moving) object.local_to_object = anchor.to_object;  // their BVH lies where they grew
     const uint32_t base_material = scene.objects[b.base_object].material;
     scene.objects.push_back(std::move(object));
     const std::string key = b.key + "|" + paint_key(desc, *b.emitter, scene.material_names[base_material]);
@@ -173,7 +175,7 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
     if (!painted) painted = build.assets.find<Shape>(key);
     if (!painted) {
       const std::vector<Color> colors = stroke_colors(scene.materials, base_material, b.shape->roots,
-                                                      *b.emitter, scene.objects[b.base_object].to_object);
+                                                      *b.emitter, anchors[b.base_object].to_object);
       TriangleMesh mesh = std::get<TriangleMesh>(b.shape->bvh->shape());
       const std::vector<uint32_t>& first = b.shape->first_vertex;
       for (size_t i = 0; i < colors.size(); ++i)
@@ -184,7 +186,46 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
     }
     // The painted mesh is what hits read (its vertex colours); the ribbons' BVH
     // traces it, unchanged by a repaint. Strokes lie where they grew: in world space.
-    scene.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect);
+    const Transform& move = anchor.rest_to_now;
+    if (anchor.moving) {
+      // Paint on an object that moves while the shutter is open moves with it: the
+      // ribbons grown at rest are placed as the object stands at each ray's instant
+      // (docs/architecture.md, "Motion blur"), so they stay on its surface. Hits read
+      // the painted mesh there; shape() reads the strokes where the frame has them.
+      std::shared_ptr<const Shape> at_frame = painted;
+      if (!move.is_identity()) {
+        const std::string placed_key = key + "|placed|" + param_key(move.m);
+        at_frame = build.assets.find<Shape>(placed_key);
+        if (!at_frame)
+          at_frame = build.assets.keep<Shape>(
+              placed_key, std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(*painted), move)));
+      }
+      scene.geometry.add_moving(b.shape->bvh, anchor.rest_to_open, anchor.rest_to_close, painted, at_frame,
+                                b.emitter->indirect);
+      continue;
+    }
+    if (move.is_identity()) {
+      scene.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect);
+      continue;
+    }
+    // An object that moved since its rest carries its strokes along: the ribbons are
+    // placed where it is now, in world space like every paint (the paint query reads
+    // paint BVHs directly), and traced by a BVH of their own.
+    const std::string moved_key = key + "|moved|" + param_key(move.m);
+    auto moved = build.assets.find<ShapeBvh>(moved_key);
+    if (!moved) {
+      TriangleMesh mesh = std::get<TriangleMesh>(*painted);
+      for (Point3& p : mesh.positions) p = move.point(p);
+      for (Normal3& n : mesh.normals) n = glm::normalize(move.normal(n));
+      auto mask = std::make_shared<AlphaMask>(*b.shape->bvh->mask());
+      const glm::vec3 stretch(glm::length(move.vector(Vec3(1.f, 0.f, 0.f))), glm::length(move.vector(Vec3(0.f, 1.f, 0.f))),
+                              glm::length(move.vector(Vec3(0.f, 0.f, 1.f))));
+      mask->layer_thickness *= std::max({stretch.x, stretch.y, stretch.z, 1.f});
+      moved = build.assets.keep<ShapeBvh>(
+          moved_key, std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(mesh)), std::move(mask)));
+      ++build.counters.shape_bvhs;
+    }
+    scene.geometry.add(moved, Transform{}, moved->shared_shape(), b.emitter->indirect);
   }
 }
 

@@ -14,6 +14,22 @@
 
 namespace inkray {
 
+// Where an object's strokes grow: the object as it stands at the shot's first frame (its
+// rest), so an animated object keeps the same strokes on the same places of its surface
+// at every frame (docs/architecture.md, "Animation"). For an object that does not move,
+// rest is where it is and rest_to_now the identity.
+struct StrokeAnchor {
+  std::string key;                     // what shaped the object at rest (shape and placement)
+  std::shared_ptr<const Shape> world;  // the object at rest, in world space
+  Transform to_object;                 // world -> object at rest (texture lookups of the paint)
+  Transform rest_to_now;               // carries strokes grown at rest to the object's place now
+  // Whether the object moves while the shutter is open (docs/architecture.md, "Motion
+  // blur"): its strokes are then carried by rest_to_open at the shutter's opening and
+  // by rest_to_close at its closing.
+  bool moving = false;
+  Transform rest_to_open{}, rest_to_close{};
+};
+
 // What building strokes reads and counts.
 struct StrokeBuild {
   AssetCache& assets;
@@ -30,9 +46,9 @@ struct StrokeBuild {
 // picking a stroke picks what it was painted on. Problems are appended to
 // errors as `strokes[i] "name": ...`. A scene without emitters does nothing.
 // Stops early, leaving the scene unfinished, once `build.cancel` is requested.
-// object_keys[o] names what shaped compiled object o (its shape and placement), so
-// strokes grown on it are found again in the cache while it stays the same.
-void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const std::string> object_keys,
+// anchors[o] says where compiled object o's strokes grow; its key finds them again in
+// the cache while the object's rest stays the same.
+void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const StrokeAnchor> anchors,
                      StrokeBuild& build, std::vector<std::string>& errors);
 
 }  // namespace inkray

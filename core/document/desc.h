@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/math/types.h"
+#include "core/document/animation_desc.h"
 #include "core/document/graph_desc.h"
 #include "core/document/material_desc.h"
 #include "core/document/npr_desc.h"
@@ -254,6 +255,17 @@ struct RenderSettings {
   PainterlyFilter painterly = PainterlyFilter::none;
   float painterly_radius = 4.f;     // pixels at the reference height 1080
   float painterly_sharpness = 8.f;  // sector weighting exponent
+  // Animation (document/animation.h): the frames a render of the shot covers, and the
+  // frame this document shows and a still renders. Frames are numbered from frame_start.
+  int frame_start = 1;
+  int frame_end = 1;
+  float fps = 24.f;
+  float frame = 1.f;  // the current frame; fractional frames are in between
+  // Motion blur: the shutter opens and closes this many frames from the frame's time
+  // (e.g. -0.25 and 0.25: half a frame, centred). Equal: no motion blur.
+  float shutter_open = 0.f;
+  float shutter_close = 0.f;
+  bool motion_blur() const { return shutter_close > shutter_open; }
   bool operator==(const RenderSettings&) const = default;
 };
 template <class V> void visit_params(RenderSettings& d, V& v) {
@@ -269,6 +281,14 @@ template <class V> void visit_params(RenderSettings& d, V& v) {
   v(at(Stage::resolve, choice("painterly", kPainterlyFilterNames, "Painterly filter over the resolved image").labelled("Painterly filter")), d.painterly);
   v(at(Stage::resolve, number("painterly_radius", 0.5, 64, "Painterly filter radius, pixels at 1080 lines").log_slider(0.5, 64)), d.painterly_radius);
   v(at(Stage::resolve, number("painterly_sharpness", 0, 64, "Painterly filter sector sharpness").slider(0, 32)), d.painterly_sharpness);
+  v(at(Stage::layout, integer("frame_start", -1000000, 1000000, "First frame of the shot")), d.frame_start);
+  v(at(Stage::layout, integer("frame_end", -1000000, 1000000, "Last frame of the shot (included)")), d.frame_end);
+  v(at(Stage::layout, number("fps", 0.001, 1000, "Frames per second of playback").slider(1, 120).labelled("Frame rate")), d.fps);
+  // The frame itself redoes nothing: the compiler diffs the pictures at the two frames
+  // (document/animation.h), so a step that moves nothing keeps the samples.
+  v(at(Stage::layout, number("frame", -1000000, 1000000, "The current frame: what the document shows and a still renders").labelled("Current frame")), d.frame);
+  v(at(Stage::object, number("shutter_open", -1, 1, "Motion blur: the shutter opens this many frames from the frame's time").slider(-1, 0)), d.shutter_open);
+  v(at(Stage::object, number("shutter_close", -1, 1, "Motion blur: the shutter closes this many frames from the frame's time; equal to shutter_open is no blur").slider(0, 1)), d.shutter_close);
 }
 
 // ---------------------------------------------------------------- the document
@@ -281,6 +301,7 @@ struct SceneDesc {
   EnvironmentDesc environment = ConstantEnvironmentDesc{};
   OutlineDesc outlines;
   std::vector<StrokeEmitterDesc> strokes;
+  std::vector<TrackDesc> animation;  // keyframed parameters (document/animation.h)
   // Directory that relative asset paths resolve against (the scene file's folder).
   std::filesystem::path base_dir;
   bool operator==(const SceneDesc&) const = default;

@@ -3,6 +3,7 @@
 // widgets. Checks that span the document (names, references, files) are in scene_checks.
 #include "core/document/json_read.h"
 
+#include "core/document/animation.h"
 #include "core/document/json_syntax.h"
 #include "core/document/scene_checks.h"
 #include "core/document/tagged_variant.h"
@@ -32,7 +33,8 @@ constexpr Param kMaterialLines = group("lines", "Outline overrides for surfaces 
 constexpr Param kScale = vector("scale", "Scale factors along x, y, z; applied first");
 constexpr Param kTranslate = vector("translate", "Offset applied last");
 constexpr std::string_view kTopLevelKeys[] = {"format",    "version", "camera", "render",   "environment",
-                                              "materials", "objects", "lights", "outlines", "strokes"};
+                                              "materials", "objects", "lights", "outlines", "strokes",
+                                              "animation"};
 
 // ---------------------------------------------------------------- message helpers
 std::string format_number(double x) {
@@ -491,6 +493,136 @@ void read_header(ErrorLog& log, const Json& doc) {
   }
 }
 
+// ---------------------------------------------------------------- animation
+// A key's value is read as its target parameter is, so it gets the same checks and
+// messages; the target must therefore resolve first, against the rest of the document.
+enum class AnyChoice : int {};
+
+bool read_key_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, std::vector<double>& out) {
+  switch (p.kind) {
+    case ParamKind::number: {
+      float f = 0.f;
+      if (!read_value(log, p, j, at, f)) return false;
+      out = {double(f)};
+      return true;
+    }
+    case ParamKind::integer: {
+      int i = 0;
+      if (!read_value(log, p, j, at, i)) return false;
+      out = {double(i)};
+      return true;
+    }
+    case ParamKind::toggle: {
+      bool b = false;
+      if (!read_value(log, p, j, at, b)) return false;
+      out = {b ? 1.0 : 0.0};
+      return true;
+    }
+    case ParamKind::choice: {
+      AnyChoice c{};
+      if (!read_value(log, p, j, at, c)) return false;
+      out = {double(int(c))};
+      return true;
+    }
+    default: {
+      Param vec = p;
+      if (p.kind == ParamKind::color_input) vec = color(p.name, 1e6, p.doc);
+      Vec3 v(0.f);
+      if (key_width(p.kind) != 3 || !read_value(log, vec, j, at, v)) return false;
+      out = {double(v.x), double(v.y), double(v.z)};
+      return true;
+    }
+  }
+}
+
+// The numbers of a value whose target does not resolve, kept so the file round-trips.
+std::vector<double> raw_key_value(const Json& j) {
+  if (j.is_boolean()) return {j.get<bool>() ? 1.0 : 0.0};
+  if (j.is_number()) return {j.get<double>()};
+  std::vector<double> out;
+  if (j.is_array())
+    for (const Json& e : j)
+      if (e.is_number()) out.push_back(e.get<double>());
+  return out;
+}
+
+constexpr Param kKeyFrame = required(number("frame", -1e6, 1e6, "Frame of the key"));
+constexpr Param kKeyInterp = choice("interp", kInterpolationNames, "Interpolation towards the next key");
+
+void read_track(ErrorLog& log, const SceneDesc& scene, const Json& j, TrackDesc& track, const std::string& at) {
+  if (!expect_object(log, j, at, "a track ({\"target\": \"objects/NAME/transform/translate\", \"keys\": [...]})"))
+    return;
+  check_keys(log, j, at, {"target", "keys"});
+  const auto target = j.find("target");
+  if (target == j.end() || !target->is_string() || target->get_ref<const std::string&>().empty()) {
+    log.add(child_path(at, "target"), "expected a parameter path such as \"objects/ball/transform/translate\", got " +
+                                          (target == j.end() ? std::string("nothing") : describe(*target)));
+    return;
+  }
+  track.target = target->get_ref<const std::string&>();
+  // An unknown target is reported by check_scene (check_animation), as other references are.
+  const std::optional<Param> p = animation_target(scene, track.target, nullptr);
+  const auto keys = j.find("keys");
+  const std::string keys_at = child_path(at, "keys");
+  if (keys == j.end() || !keys->is_array() || keys->empty()) {
+    log.add(keys_at, "expected a non-empty array of keys ({\"frame\": f, \"value\": v}), got " +
+                         (keys == j.end() ? std::string("nothing") : describe(*keys)));
+    return;
+  }
+  for (std::size_t k = 0; k < keys->size(); ++k) {
+    const Json& key_json = (*keys)[k];
+    const std::string key_at = element_path(keys_at, k);
+    if (!expect_object(log, key_json, key_at, "a key ({\"frame\": f, \"value\": v, \"interp\": \"bezier\"})")) continue;
+    check_keys(log, key_json, key_at, {"frame", "value", "interp"});
+    KeyDesc key;
+    const auto frame = key_json.find("frame");
+    if (frame == key_json.end()) {
+      log.add(key_at, "missing required key \"frame\"");
+      continue;
+    }
+    float f = 0.f;
+    if (!read_value(log, kKeyFrame, *frame, child_path(key_at, "frame"), f)) continue;
+    key.frame = frame->get<double>();
+    if (const auto interp = key_json.find("interp"); interp != key_json.end())
+      read_value(log, kKeyInterp, *interp, child_path(key_at, "interp"), key.interp);
+    const auto value = key_json.find("value");
+    if (value == key_json.end()) {
+      log.add(key_at, "missing required key \"value\"");
+      continue;
+    }
+    if (p) {
+      if (!read_key_value(log, *p, *value, child_path(key_at, "value"), key.value)) continue;
+    } else {
+      key.value = raw_key_value(*value);
+    }
+    if (!track.keys.empty() && !(key.frame > track.keys.back().frame)) {
+      log.add(child_path(key_at, "frame"), "keys must be in increasing frame order, one per frame: frame " +
+                                               format_number(key.frame) + " follows frame " +
+                                               format_number(track.keys.back().frame));
+      continue;
+    }
+    track.keys.push_back(std::move(key));
+  }
+}
+
+void read_animation(ErrorLog& log, const Json& doc, SceneDesc& scene) {
+  const auto it = doc.find("animation");
+  if (it == doc.end()) return;
+  if (!it->is_array()) {
+    log.add("animation", "expected an array of tracks, got " + describe(*it));
+    return;
+  }
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    TrackDesc track;
+    const std::string at = element_path("animation", i);
+    read_track(log, scene, (*it)[i], track, at);
+    for (const TrackDesc& other : scene.animation)
+      if (!track.target.empty() && other.target == track.target)
+        log.add(child_path(at, "target"), "another track already animates " + in_quotes(track.target));
+    scene.animation.push_back(std::move(track));
+  }
+}
+
 }  // namespace
 
 void read_scene_document(const nlohmann::json& doc, const std::filesystem::path& base_dir, SceneDesc& scene,
@@ -518,6 +650,7 @@ void read_scene_document(const nlohmann::json& doc, const std::filesystem::path&
   if (!read_list(log, doc, "strokes", scene.strokes, read_emitter, cancel)) return;
 
   name_unnamed(scene);
+  read_animation(log, doc, scene);
   check_scene(scene, base_dir, log);
 }
 

@@ -2,6 +2,7 @@
 // by its C++ type (and, for choices, its Param's name table).
 #include "core/document/json_write.h"
 
+#include "core/document/animation.h"
 #include "core/document/tagged_variant.h"
 
 #include <algorithm>
@@ -187,6 +188,46 @@ void append_pretty(std::string& out, const Json& value, std::size_t indent) {
   out += is_object ? '}' : ']';
 }
 
+// A key's value as its parameter is written: a number, true/false, a choice's name or
+// an array of three. A track whose target does not resolve keeps its numbers.
+Json key_value_json(const std::optional<Param>& p, const std::vector<double>& value) {
+  const auto number = [&](double x) {
+    if (p && p->kind == ParamKind::integer) return Json(static_cast<long long>(std::llround(x)));
+    return Json(float_to_json_number(static_cast<float>(x)));
+  };
+  if (value.size() == 1) {
+    if (p && p->kind == ParamKind::toggle) return value[0] >= 0.5;
+    if (p && p->kind == ParamKind::choice) {
+      const auto index = static_cast<std::size_t>(std::llround(value[0]));
+      if (index < p->choices.size()) return std::string(p->choices[index]);
+    }
+    return number(value[0]);
+  }
+  Json list = Json::array();
+  for (double x : value) list.push_back(number(x));
+  return list;
+}
+
+Json animation_json(const SceneDesc& scene) {
+  Json tracks = Json::array();
+  for (const TrackDesc& track : scene.animation) {
+    const std::optional<Param> p = animation_target(scene, track.target, nullptr);
+    Json keys = Json::array();
+    for (const KeyDesc& key : track.keys) {
+      Json object = Json::object();
+      object["frame"] = key.frame;
+      object["value"] = key_value_json(p, key.value);
+      object["interp"] = std::string(kInterpolationNames[static_cast<std::size_t>(key.interp)]);
+      keys.push_back(std::move(object));
+    }
+    Json object = Json::object();
+    object["target"] = track.target;
+    object["keys"] = std::move(keys);
+    tracks.push_back(std::move(object));
+  }
+  return tracks;
+}
+
 }  // namespace
 
 std::string format_scene_json(const nlohmann::ordered_json& doc) {
@@ -236,6 +277,7 @@ nlohmann::ordered_json write_scene_document(const SceneDesc& scene) {
   Json strokes = Json::array();
   for (const StrokeEmitterDesc& e : scene.strokes) strokes.push_back(struct_json(e));
   doc["strokes"] = std::move(strokes);
+  if (!scene.animation.empty()) doc["animation"] = animation_json(scene);
   return doc;
 }
 

@@ -3,6 +3,8 @@
 // type with a file is checked without a change here.
 #include "core/document/scene_checks.h"
 
+#include "core/document/animation.h"
+
 #include "core/document/tagged_variant.h"
 
 #include <algorithm>
@@ -316,6 +318,12 @@ void check_scene(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log
   check_strokes(scene, log);
   check_assets(scene, base_dir, log);
   check_degenerate_directions(scene, log);
+  if (scene.render.frame_end < scene.render.frame_start)
+    log.add_unrenderable("render.frame_end", "must not be before render.frame_start (" +
+                                                 std::to_string(scene.render.frame_start) + ")");
+  if (scene.render.shutter_close < scene.render.shutter_open)
+    log.add_unrenderable("render.shutter_close", "must not be before render.shutter_open");
+  for (const std::string& problem : check_animation(scene)) log.add_unrenderable("", problem);
 }
 
 }  // namespace inkray

@@ -1,10 +1,14 @@
 #include "core/film/film.h"
 
 #include <algorithm>
-
 #include <cmath>
 
 namespace inkray {
+namespace {
+
+double dluminance(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+}  // namespace
 
 std::optional<Aov> aov_from_name(std::string_view name) {
   for (size_t i = 0; i < kAovNames.size(); ++i)
@@ -21,21 +25,51 @@ std::string aov_name_list() {
   return list;
 }
 
+void LineSums::add(const LineSample& s) {
+  for (size_t t = 0; t < coverage.size(); ++t) coverage[t] += double(s.coverage[t]);
+  weight += double(s.weight);
+  override_weight += double(s.override_weight);
+  override_color += glm::dvec3(s.override_color);
+  rays += double(s.rays);
+  hit_rays += double(s.hit_rays);
+}
+
+void LineSums::add(const LineSums& s) {
+  for (size_t t = 0; t < coverage.size(); ++t) coverage[t] += s.coverage[t];
+  weight += s.weight;
+  override_weight += s.override_weight;
+  override_color += s.override_color;
+  rays += s.rays;
+  hit_rays += s.hit_rays;
+}
+
+LineSample LineSums::mean() const {
+  LineSample m;
+  if (!(rays > 0.0)) return m;
+  for (size_t t = 0; t < coverage.size(); ++t) m.coverage[t] = float(coverage[t] / rays);
+  m.weight = float(weight / rays);
+  m.override_weight = float(override_weight / rays);
+  m.override_color = Color(override_color / rays);
+  m.rays = float(rays);
+  m.hit_rays = float(hit_rays);
+  return m;
+}
+
 Film::Film(int width, int height, AovSet aovs, bool lines) : width_(width), height_(height), aovs_(aovs) {
   const size_t n = size_t(width) * size_t(height);
   for (int h = 0; h < 2; ++h) {
-    sum_[h].assign(n, Color(0.f));
+    sum_[h].assign(n, glm::dvec3(0.0));
     count_[h].assign(n, 0);
   }
   // Pay only for what is asked for: a render keeps only the AOVs it was asked for.
-  if (aovs.has(Aov::albedo)) albedo_sum_.assign(n, Color(0.f));
-  if (aovs.has(Aov::normal)) normal_sum_.assign(n, Color(0.f));
-  if (aovs.has(Aov::depth)) depth_sum_.assign(n, 0.f);
+  if (aovs.has(Aov::albedo)) albedo_sum_.assign(n, glm::dvec3(0.0));
+  if (aovs.has(Aov::normal)) normal_sum_.assign(n, glm::dvec3(0.0));
+  if (aovs.has(Aov::depth)) depth_sum_.assign(n, 0.0);
   if (aovs.has(Aov::albedo) || aovs.has(Aov::normal) || aovs.has(Aov::depth)) hit_count_.assign(n, 0);
   if (aovs.has(Aov::object_id)) object_id_.assign(n, -2);
   if (aovs.has(Aov::material_id)) material_id_.assign(n, -2);
   if (lines) {
-    line_sum_.assign(n, LineSample{});
+    line_sum_.assign(n, LineSums{});
     line_count_.assign(n, 0);
   }
 }
@@ -60,20 +94,58 @@ void Film::clear_region(int x0, int y0, int x1, int y1) {
     for (int x = std::max(x0, 0); x < std::min(x1, width_); ++x) {
       const size_t i = index(x, y);
       for (int half = 0; half < 2; ++half) {
-        sum_[size_t(half)][i] = Color(0.f);
+        sum_[size_t(half)][i] = glm::dvec3(0.0);
         count_[size_t(half)][i] = 0;
       }
-      if (!albedo_sum_.empty()) albedo_sum_[i] = Color(0.f);
-      if (!normal_sum_.empty()) normal_sum_[i] = Color(0.f);
-      if (!depth_sum_.empty()) depth_sum_[i] = 0.f;
+      if (!albedo_sum_.empty()) albedo_sum_[i] = glm::dvec3(0.0);
+      if (!normal_sum_.empty()) normal_sum_[i] = glm::dvec3(0.0);
+      if (!depth_sum_.empty()) depth_sum_[i] = 0.0;
       if (!hit_count_.empty()) hit_count_[i] = 0;
       if (!object_id_.empty()) object_id_[i] = -2;
       if (!material_id_.empty()) material_id_[i] = -2;
       if (!line_sum_.empty()) {
-        line_sum_[i] = LineSample{};
+        line_sum_[i] = LineSums{};
         line_count_[i] = 0;
       }
     }
+  }
+}
+
+FilmPixel Film::pixel(int x, int y) const {
+  const size_t i = index(x, y);
+  FilmPixel p;
+  for (size_t half = 0; half < 2; ++half) {
+    p.sum[half] = sum_[half][i];
+    p.count[half] = count_[half][i];
+  }
+  if (!albedo_sum_.empty()) p.albedo_sum = albedo_sum_[i];
+  if (!normal_sum_.empty()) p.normal_sum = normal_sum_[i];
+  if (!depth_sum_.empty()) p.depth_sum = depth_sum_[i];
+  if (!hit_count_.empty()) p.hit_count = hit_count_[i];
+  if (!object_id_.empty()) p.object_id = object_id_[i];
+  if (!material_id_.empty()) p.material_id = material_id_[i];
+  if (!line_sum_.empty()) {
+    p.lines = line_sum_[i];
+    p.line_count = line_count_[i];
+  }
+  return p;
+}
+
+void Film::add_pixel(int x, int y, const FilmPixel& p) {
+  const size_t i = index(x, y);
+  for (size_t half = 0; half < 2; ++half) {
+    sum_[half][i] += p.sum[half];
+    count_[half][i] += p.count[half];
+  }
+  if (!albedo_sum_.empty()) albedo_sum_[i] += p.albedo_sum;
+  if (!normal_sum_.empty()) normal_sum_[i] += p.normal_sum;
+  if (!depth_sum_.empty()) depth_sum_[i] += p.depth_sum;
+  if (!hit_count_.empty()) hit_count_[i] += p.hit_count;
+  if (!object_id_.empty() && object_id_[i] == -2) object_id_[i] = p.object_id;
+  if (!material_id_.empty() && material_id_[i] == -2) material_id_[i] = p.material_id;
+  if (!line_sum_.empty()) {
+    line_sum_[i].add(p.lines);
+    line_count_[i] += p.line_count;
   }
 }
 
@@ -85,7 +157,7 @@ void Film::add_sample(int x, int y, uint32_t pass, const Color& radiance) {
   }
   const uint32_t half = pass & 1u;
   ++count_[half][i];
-  sum_[half][i] += radiance;
+  sum_[half][i] += glm::dvec3(radiance);
 }
 
 void Film::add_first_hit(int x, int y, const FirstHit& hit) {
@@ -95,34 +167,20 @@ void Film::add_first_hit(int x, int y, const FirstHit& hit) {
   if (!material_id_.empty() && material_id_[i] == -2) material_id_[i] = hit.material;
   if (hit_count_.empty() || hit.object < 0) return;
   ++hit_count_[i];
-  if (!albedo_sum_.empty()) albedo_sum_[i] += hit.albedo;
-  if (!normal_sum_.empty()) normal_sum_[i] += hit.normal;
-  if (!depth_sum_.empty()) depth_sum_[i] += hit.depth;
+  if (!albedo_sum_.empty()) albedo_sum_[i] += glm::dvec3(hit.albedo);
+  if (!normal_sum_.empty()) normal_sum_[i] += glm::dvec3(hit.normal);
+  if (!depth_sum_.empty()) depth_sum_[i] += double(hit.depth);
 }
 
 void Film::add_lines(int x, int y, const LineSample& lines) {
   const size_t i = index(x, y);
-  LineSample& sum = line_sum_[i];
-  for (size_t t = 0; t < sum.coverage.size(); ++t) sum.coverage[t] += lines.coverage[t];
-  sum.weight += lines.weight;
-  sum.override_weight += lines.override_weight;
-  sum.override_color += lines.override_color;
-  sum.rays += lines.rays;
-  sum.hit_rays += lines.hit_rays;
+  line_sum_[i].add(lines);
   ++line_count_[i];
 }
 
 LineSample Film::line_mean(int x, int y) const {
   if (line_sum_.empty()) return {};
-  const size_t i = index(x, y);
-  if (!(line_sum_[i].rays > 0.f)) return {};
-  LineSample mean = line_sum_[i];
-  const float inv = 1.f / line_sum_[i].rays;
-  for (float& c : mean.coverage) c *= inv;
-  mean.weight *= inv;
-  mean.override_weight *= inv;
-  mean.override_color *= inv;
-  return mean;
+  return line_sum_[index(x, y)].mean();
 }
 
 uint32_t Film::samples_at(int x, int y) const { return count_[0][index(x, y)] + count_[1][index(x, y)]; }
@@ -131,7 +189,7 @@ RgbImage Film::resolve() const {
   RgbImage img{width_, height_, std::vector<Color>(size_t(width_) * size_t(height_), Color(0.f))};
   for (size_t i = 0; i < img.pixels.size(); ++i) {
     const uint32_t n = count_[0][i] + count_[1][i];
-    if (n) img.pixels[i] = (sum_[0][i] + sum_[1][i]) / float(n);
+    if (n) img.pixels[i] = Color((sum_[0][i] + sum_[1][i]) / double(n));
   }
   return img;
 }
@@ -154,15 +212,15 @@ RgbImage Film::resolve_aov(Aov aov) const {
   }
   if (!aovs_.has(aov)) return img;
   for (size_t i = 0; i < img.pixels.size(); ++i) {
-    const float hits = hit_count_.empty() ? 0.f : float(hit_count_[i]);
+    const double hits = hit_count_.empty() ? 0.0 : double(hit_count_[i]);
     switch (aov) {
-      case Aov::albedo: img.pixels[i] = hits ? albedo_sum_[i] / hits : Color(0.f); break;
+      case Aov::albedo: img.pixels[i] = hits > 0.0 ? Color(albedo_sum_[i] / hits) : Color(0.f); break;
       case Aov::normal: {
-        const Vec3 n = normal_sum_[i];
-        img.pixels[i] = glm::length(n) > 0.f ? glm::normalize(n) : Vec3(0.f);
+        const glm::dvec3 n = normal_sum_[i];
+        img.pixels[i] = glm::length(n) > 0.0 ? Vec3(glm::normalize(n)) : Vec3(0.f);
         break;
       }
-      case Aov::depth: img.pixels[i] = Color(hits ? depth_sum_[i] / hits : 0.f); break;
+      case Aov::depth: img.pixels[i] = Color(hits > 0.0 ? float(depth_sum_[i] / hits) : 0.f); break;
       case Aov::object_id: img.pixels[i] = Color(float(object_id_[i] < -1 ? -1 : object_id_[i])); break;
       case Aov::material_id: img.pixels[i] = Color(float(material_id_[i] < -1 ? -1 : material_id_[i])); break;
       default: break;  // outline AOVs are handled above
@@ -177,7 +235,7 @@ double Film::estimated_relative_error() const {
   for (size_t i = 0; i < sum_[0].size(); ++i) {
     const uint32_t na = count_[0][i], nb = count_[1][i];
     if (!na || !nb) continue;
-    const double a = luminance(sum_[0][i]) / na, b = luminance(sum_[1][i]) / nb;
+    const double a = dluminance(sum_[0][i]) / na, b = dluminance(sum_[1][i]) / nb;
     // Var(mean of both) ~ (a - b)^2 / 4 for equal halves.
     diff2 += (a - b) * (a - b) * 0.25;
     lum += 0.5 * (a + b);
@@ -192,7 +250,7 @@ RgbImage Film::resolve_noise() const {
   for (size_t i = 0; i < img.pixels.size(); ++i) {
     const uint32_t na = count_[0][i], nb = count_[1][i];
     if (!na || !nb) continue;
-    const double a = luminance(sum_[0][i]) / na, b = luminance(sum_[1][i]) / nb;
+    const double a = dluminance(sum_[0][i]) / na, b = dluminance(sum_[1][i]) / nb;
     const double mean = 0.5 * (a + b);
     if (mean <= 0.0) continue;
     img.pixels[i] = Color(float(std::abs(a - b) * 0.5 / mean));

@@ -2,6 +2,10 @@
 // odd passes, whose difference estimates the noise without a reference), and
 // the first-hit AOVs a render asked for. Tiles are disjoint, so writers need
 // no locks; a pixel is written by one thread at a time.
+//
+// Sums are kept in double: adding float samples to a double is exact for the
+// sums of a render, so a film's sums do not depend on how its passes were split
+// between machines and merged again (docs/final-renders.md, "Exactness").
 #pragma once
 
 #include "core/image/rgb_image.h"
@@ -40,6 +44,41 @@ struct AovSet {
   bool has(Aov a) const { return bits & (1u << uint32_t(a)); }
   void add(Aov a) { bits |= 1u << uint32_t(a); }
   bool any_first_hit() const { return bits & ((1u << uint32_t(Aov::outline)) - 1u); }
+  AovSet first_hit() const { return {bits & ((1u << uint32_t(Aov::outline)) - 1u)}; }
+};
+
+// A pixel window [x0,x1) x [y0,y1); empty means none.
+struct PixelWindow {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+  bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+  bool operator==(const PixelWindow&) const = default;
+};
+
+// The outline buffers' sums of LineSample, in double like the radiance.
+struct LineSums {
+  std::array<double, kLineTypeCount> coverage{};
+  double weight = 0.0, override_weight = 0.0;
+  glm::dvec3 override_color{0.0};
+  double rays = 0.0, hit_rays = 0.0;
+  void add(const LineSample& s);
+  void add(const LineSums& s);
+  LineSample mean() const;  // per ray; zero without rays
+};
+
+// One pixel's raw state: what a partial file holds and a merge adds up
+// (film_partial.h). Ids are -2 before the pixel's first sample.
+struct FilmPixel {
+  std::array<glm::dvec3, 2> sum{glm::dvec3(0.0), glm::dvec3(0.0)};  // radiance of even and odd passes
+  std::array<uint32_t, 2> count{};
+  glm::dvec3 albedo_sum{0.0}, normal_sum{0.0};
+  double depth_sum = 0.0;
+  uint32_t hit_count = 0;
+  int object_id = -2, material_id = -2;
+  LineSums lines;
+  uint32_t line_count = 0;
 };
 
 class Film {
@@ -60,6 +99,13 @@ class Film {
   // Clears the pixels in [x0,x1) x [y0,y1) only (a render region restarting).
   void clear_region(int x0, int y0, int x1, int y1);
 
+  // A pixel's raw state, of the buffers this film keeps (the others read as empty).
+  FilmPixel pixel(int x, int y) const;
+  // Adds another film's pixel, from passes after this one's: sums and counts add, ids
+  // stay those of the earlier first sample. Buffers this film does not keep are skipped.
+  void add_pixel(int x, int y, const FilmPixel& p);
+  void add_nonfinite(uint64_t n) { nonfinite_.fetch_add(n, std::memory_order_relaxed); }
+
   uint64_t nonfinite_samples() const { return nonfinite_.load(std::memory_order_relaxed); }
   uint32_t samples_at(int x, int y) const;
 
@@ -70,8 +116,8 @@ class Film {
   RgbImage resolve_aov(Aov aov) const;
   // Mean outline contribution of a pixel's stencil rays (zero without lines).
   LineSample line_mean(int x, int y) const;
-  // The sums behind it, and the samples that added to them (adaptive line sampling).
-  const LineSample& line_sum(int x, int y) const { return line_sum_[index(x, y)]; }
+  // The sums behind it, and the samples that added to them.
+  const LineSums& line_sum(int x, int y) const { return line_sum_[index(x, y)]; }
   uint32_t line_samples(int x, int y) const { return line_count_[index(x, y)]; }
   // Estimated relative RMS error of the mean image from the half-buffer
   // difference: sqrt(mean((a-b)^2)/4) / mean(luminance), over luminance.
@@ -86,13 +132,13 @@ class Film {
 
   int width_, height_;
   AovSet aovs_;
-  std::array<std::vector<Color>, 2> sum_;
+  std::array<std::vector<glm::dvec3>, 2> sum_;
   std::array<std::vector<uint32_t>, 2> count_;
-  std::vector<Color> albedo_sum_, normal_sum_;
-  std::vector<float> depth_sum_;
+  std::vector<glm::dvec3> albedo_sum_, normal_sum_;
+  std::vector<double> depth_sum_;
   std::vector<uint32_t> hit_count_;
   std::vector<int> object_id_, material_id_;
-  std::vector<LineSample> line_sum_;
+  std::vector<LineSums> line_sum_;
   std::vector<uint32_t> line_count_;  // samples that added to line_sum_
   std::atomic<uint64_t> nonfinite_{0};
 };

@@ -5,6 +5,7 @@
 #include "core/math/hash.h"
 
 #include <embree3/rtcore.h>
+#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <array>
@@ -178,15 +179,41 @@ RTCRay to_rtc(const Ray& ray, float t_max) {
   r.dir_z = ray.d.z;
   r.tnear = 0.f;
   r.tfar = t_max;
+  r.time = ray.time;  // only moving instances read it
   r.mask = 0xffffffffu;
   r.flags = 0;
   return r;
 }
 
-SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit, const Ray& ray) {
+// interpolate_shading of a mesh moved by `move`, as `transformed` (triangle_mesh.h)
+// would move it: normals by the inverse transpose, each normalised, then interpolated.
+MeshShading moved_shading(const TriangleMesh& mesh, uint32_t tri, float b1, float b2, const Normal3& ng,
+                          const Transform& move) {
+  MeshShading s = interpolate_shading(mesh, tri, b1, b2, ng);  // uv and colour
+  s.ng = s.ns = ng;
+  if (mesh.normals.empty()) return s;
+  const uint32_t* idx = &mesh.indices[3 * size_t(tri)];
+  const auto moved = [&](uint32_t i) { return glm::normalize(move.normal(mesh.normals[i])); };
+  const Vec3 ns = (1.f - b1 - b2) * moved(idx[0]) + b1 * moved(idx[1]) + b2 * moved(idx[2]);
+  const float ns_len = glm::length(ns);
+  if (ns_len > 0.f) {
+    s.ns = ns / ns_len;
+    if (glm::dot(s.ng, s.ns) < 0.f) s.ng = -s.ng;
+  }
+  return s;
+}
+
+// The hit on a triangle of `mesh`, which lies in world space, or (kMoved) in the
+// space of a moving instance that `move` places where it stands at the ray's time
+// (the barycentrics are the same in both spaces). Two instances, so the still one
+// is exactly what it was before shapes could move.
+template <bool kMoved>
+SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit, const Ray& ray,
+                                        const Transform* move = nullptr) {
   const uint32_t i0 = mesh.indices[3 * hit.prim], i1 = mesh.indices[3 * hit.prim + 1],
                  i2 = mesh.indices[3 * hit.prim + 2];
-  const Point3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
+  Point3 p0 = mesh.positions[i0], p1 = mesh.positions[i1], p2 = mesh.positions[i2];
+  if constexpr (kMoved) p0 = move->point(p0), p1 = move->point(p1), p2 = move->point(p2);
   const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.f - b1 - b2;
   SurfaceInteraction si;
   si.t = hit.t;
@@ -201,8 +228,12 @@ SurfaceInteraction triangle_interaction(const TriangleMesh& mesh, const Hit& hit
       Vec3(gamma_bound(7) * max_component(glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2)));
   const Vec3 n = glm::cross(p1 - p0, p2 - p0);
   const float len = glm::length(n);
-  const MeshShading shading =
-      interpolate_shading(mesh, hit.prim, b1, b2, len > 0.f ? n / len : -glm::normalize(ray.d));
+  const Normal3 facet = len > 0.f ? n / len : -glm::normalize(ray.d);
+  MeshShading shading;
+  if constexpr (kMoved)
+    shading = moved_shading(mesh, hit.prim, b1, b2, facet, *move);
+  else
+    shading = interpolate_shading(mesh, hit.prim, b1, b2, facet);
   si.ng = shading.ng;
   si.ns = shading.ns;
   si.uv = shading.uv;
@@ -254,6 +285,76 @@ std::array<float, 12> embree_transform(const Transform& t) {
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 3; ++r) xfm[size_t(3 * c + r)] = t.m[c][r];
   return xfm;
+}
+
+// An affine transform as Embree's T R S (RTCQuaternionDecomposition): the linear part
+// is split by Gram-Schmidt into a rotation R (a proper one: a reflection stays in S)
+// and an upper triangular S of scales and shears, so any transform of a document
+// (scale, rotations, translation) and any product of them decomposes.
+struct Decomposition {
+  glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+  glm::dmat3 upper{1.0};  // S, column-major: upper[column][row]
+  glm::dvec3 translation{0.0};
+};
+
+Decomposition decompose(const Transform& t) {
+  const glm::dmat3 linear(glm::dmat4(t.m));
+  Decomposition d;
+  glm::dmat3 q(0.0);
+  for (int c = 0; c < 3; ++c) {
+    glm::dvec3 v = linear[c];
+    for (int k = 0; k < c; ++k) {  // modified Gram-Schmidt: stable for near-parallel columns
+      d.upper[c][k] = glm::dot(q[k], v);
+      v -= d.upper[c][k] * q[k];
+    }
+    const double len = glm::length(v);
+    d.upper[c][c] = len;
+    q[c] = len > 0.0 ? v / len : glm::dvec3(c == 0, c == 1, c == 2);
+    for (int k = c + 1; k < 3; ++k) d.upper[c][k] = 0.0;
+  }
+  if (glm::determinant(q) < 0.0) {  // a reflection: its sign moves into S's last scale
+    q[2] = -q[2];
+    d.upper[2][2] = -d.upper[2][2];
+  }
+  d.rotation = glm::normalize(glm::quat_cast(q));
+  d.translation = glm::dvec3(glm::dvec4(t.m[3]));
+  return d;
+}
+
+RTCQuaternionDecomposition embree_decomposition(const Decomposition& d) {
+  RTCQuaternionDecomposition qd;
+  rtcInitQuaternionDecomposition(&qd);
+  rtcQuaternionDecompositionSetScale(&qd, float(d.upper[0][0]), float(d.upper[1][1]), float(d.upper[2][2]));
+  rtcQuaternionDecompositionSetSkew(&qd, float(d.upper[1][0]), float(d.upper[2][0]), float(d.upper[2][1]));
+  rtcQuaternionDecompositionSetQuaternion(&qd, float(d.rotation.w), float(d.rotation.x), float(d.rotation.y),
+                                          float(d.rotation.z));
+  rtcQuaternionDecompositionSetTranslation(&qd, float(d.translation.x), float(d.translation.y),
+                                           float(d.translation.z));
+  return qd;
+}
+
+// The two time steps of a moving instance: the decompositions of `open` and `close`,
+// the second's quaternion on the first's side, so the slerp takes the short way round.
+std::array<RTCQuaternionDecomposition, 2> motion_steps(const Transform& open, const Transform& close) {
+  const Decomposition a = decompose(open);
+  Decomposition b = decompose(close);
+  if (glm::dot(a.rotation, b.rotation) < 0.0) b.rotation = -b.rotation;
+  return {embree_decomposition(a), embree_decomposition(b)};
+}
+
+// A transform from Embree's 3x4 column-major form.
+Transform from_embree(const std::array<float, 12>& xfm) {
+  Mat4 m(1.f);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) m[c][r] = xfm[size_t(3 * c + r)];
+  return Transform::from_matrix(m);
+}
+
+// How much a transform stretches lengths at most (along an axis, and never less than
+// 1): what a paint layer grown in its space is thick at least, after it.
+float stretch(const Transform& t) {
+  return std::max({glm::length(t.vector(Vec3(1.f, 0.f, 0.f))), glm::length(t.vector(Vec3(0.f, 1.f, 0.f))),
+                   glm::length(t.vector(Vec3(0.f, 0.f, 1.f))), 1.f});
 }
 
 }  // namespace
@@ -335,6 +436,8 @@ ShapeBvh::ShapeBvh(std::shared_ptr<const Shape> shape, std::shared_ptr<const Alp
 ShapeBvh::~ShapeBvh() { rtcReleaseScene(scene_); }
 
 EmbreeScene::Impl::~Impl() {
+  for (RTCGeometry geom : motion)
+    if (geom) rtcReleaseGeometry(geom);
   if (scene) rtcReleaseScene(scene);
 }
 
@@ -357,19 +460,42 @@ uint32_t EmbreeScene::add(std::shared_ptr<const ShapeBvh> bvh, const Transform& 
   return uint32_t(impl_->instances.size() - 1);
 }
 
+uint32_t EmbreeScene::add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open, const Transform& close,
+                                 std::shared_ptr<const Shape> local, std::shared_ptr<const Shape> world,
+                                 bool indirect) {
+  if (impl_->committed) throw std::logic_error("EmbreeScene::add_moving after commit");
+  Instance instance{std::move(bvh), open, std::move(world), indirect, true, close, std::move(local)};
+  if (!instance.local) instance.local = instance.bvh->shared_shape();
+  impl_->instances.push_back(std::move(instance));
+  return uint32_t(impl_->instances.size() - 1);
+}
+
 void EmbreeScene::commit() {
   if (impl_->committed) throw std::logic_error("EmbreeScene::commit twice");
   RTCDevice device = shared_embree_device();
   // Few instances, rebuilt on every move of an object: a fast build matters more
   // than the last few percent of traversal speed, which the bottom levels decide.
   impl_->scene = new_embree_scene(RTC_BUILD_QUALITY_MEDIUM);
+  impl_->motion.assign(impl_->instances.size(), nullptr);
   for (uint32_t id = 0; id < impl_->instances.size(); ++id) {
     const Instance& instance = impl_->instances[id];
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geom, instance.bvh->embree_scene());
-    rtcSetGeometryTimeStepCount(geom, 1);
-    const std::array<float, 12> xfm = embree_transform(instance.to_world);
-    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
+    if (!instance.moving) {
+      // What does not move has one time step: rays ignore their time there, and a
+      // scene without moving shapes is traced exactly as without motion blur.
+      rtcSetGeometryTimeStepCount(geom, 1);
+      const std::array<float, 12> xfm = embree_transform(instance.to_world);
+      rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
+    } else {
+      rtcSetGeometryTimeStepCount(geom, 2);
+      const std::array<RTCQuaternionDecomposition, 2> steps = motion_steps(instance.to_world, instance.to_close);
+      rtcSetGeometryTransformQuaternion(geom, 0, &steps[0]);
+      rtcSetGeometryTransformQuaternion(geom, 1, &steps[1]);
+      rtcRetainGeometry(geom);
+      impl_->motion[id] = geom;
+      impl_->any_moving = true;
+    }
     const AlphaMask* mask = instance.bvh->mask();
     const bool paint = mask && mask->paint;
     rtcSetGeometryMask(geom, !paint ? kSolid : instance.indirect ? kPaint | kPaintIndirect : kPaint);
@@ -382,8 +508,9 @@ void EmbreeScene::commit() {
       if (instance.indirect) impl_->indirect_paint.push_back(id);
     }
   }
-  impl_->direct_paint = std::all_of(impl_->camera_paint.begin(), impl_->camera_paint.end(),
-                                    [&](uint32_t id) { return impl_->instances[id].to_world.is_identity(); });
+  impl_->direct_paint = std::all_of(impl_->camera_paint.begin(), impl_->camera_paint.end(), [&](uint32_t id) {
+    return !impl_->instances[id].moving && impl_->instances[id].to_world.is_identity();
+  });
   for (const uint32_t id : impl_->camera_paint) {
     RTCBounds b;
     rtcGetSceneBounds(impl_->instances[id].bvh->embree_scene(), &b);
@@ -401,9 +528,19 @@ bool EmbreeScene::same_instances(const EmbreeScene& other) const {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
     if (a[i].bvh != b[i].bvh || a[i].world != b[i].world || a[i].to_world.m != b[i].to_world.m ||
-        a[i].indirect != b[i].indirect)
+        a[i].indirect != b[i].indirect || a[i].moving != b[i].moving ||
+        (a[i].moving && (a[i].to_close.m != b[i].to_close.m || a[i].local != b[i].local)))
       return false;
   return true;
+}
+
+Transform EmbreeScene::placement(uint32_t index, float time) const {
+  const Instance& instance = impl_->instances[index];
+  if (!instance.moving) return instance.to_world;
+  std::array<float, 12> xfm{};
+  rtcGetGeometryTransform(impl_->motion[index], glm::clamp(time, 0.f, 1.f), RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR,
+                          xfm.data());
+  return from_embree(xfm);
 }
 
 bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind) const {
@@ -434,7 +571,16 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind)
     return true;
   }
   const AlphaMask* mask = bvh.mask();
-  if (mask && mask->paint) resolve_paint(ray, *mask, ng, kind, hit);
+  if (mask && mask->paint) {
+    if (!impl_->instances[hit->geometry].moving) {
+      resolve_paint(ray, mask->layer_thickness, ng, kind, hit);
+    } else {
+      // Embree reports the normal in the instance's space: carried to where the
+      // paint stands at the ray's time, its layer stretched with it.
+      const Transform at = placement(hit->geometry, ray.time);
+      resolve_paint(ray, mask->layer_thickness * stretch(at), at.normal(ng), kind, hit);
+    }
+  }
   return true;
 }
 
@@ -451,10 +597,17 @@ void EmbreeScene::paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) con
   if (std::none_of(impl_->camera_paint_bounds.begin(), impl_->camera_paint_bounds.end(), inside)) return;
   const Instance& instance = impl_->instances[hit->geometry];
   Vec3 n = ng;
-  if (const auto* sphere = std::get_if<Sphere>(instance.world.get()))
+  if (instance.moving) {
+    const Transform at = placement(hit->geometry, ray.time);
+    if (const auto* sphere = std::get_if<Sphere>(instance.local.get()))
+      n = Sphere{sphere->center, sphere->radius, at * sphere->to_world}.normal_at(p);
+    else
+      n = at.normal(ng);
+  } else if (const auto* sphere = std::get_if<Sphere>(instance.world.get())) {
     n = sphere->normal_at(p);
-  else if (!instance.to_world.is_identity())
+  } else if (!instance.to_world.is_identity()) {
     n = instance.to_world.normal(ng);
+  }
   const float d_len = glm::length(ray.d), ng_len = glm::length(n);
   if (!(d_len > 0.f) || !(ng_len > 0.f)) return;
   const float cos_theta = std::abs(glm::dot(ray.d, n)) / (d_len * ng_len);
@@ -478,7 +631,7 @@ void EmbreeScene::paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) con
   if (top.found) *hit = {top.t, top.instance, top.prim, {top.u, top.v}};
 }
 
-void EmbreeScene::resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, RayKind kind,
+void EmbreeScene::resolve_paint(const Ray& ray, float layer_thickness, const Vec3& ng, RayKind kind,
                                 Hit* hit) const {
   // Other paint under the hit lies within the layer's thickness of it, which
   // the ray crosses over this distance (capped at grazing angles, where the
@@ -487,7 +640,7 @@ void EmbreeScene::resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec
   const float d_len = glm::length(ray.d), ng_len = glm::length(ng);
   if (!(d_len > 0.f) || !(ng_len > 0.f)) return;
   const float cos_theta = std::abs(glm::dot(ray.d, ng)) / (d_len * ng_len);
-  const float reach = mask.layer_thickness / (std::max(cos_theta, 0.05f) * d_len);
+  const float reach = layer_thickness / (std::max(cos_theta, 0.05f) * d_len);
   // The same ray, so every alpha test decides as it did, over that stretch only.
   QueryContext context;
   rtcInitIntersectContext(&context.rtc);
@@ -522,13 +675,28 @@ bool EmbreeScene::occluded(const Ray& ray, float t_max) const {
   return r.tfar < 0.f;
 }
 
+SurfaceInteraction EmbreeScene::moving_interaction(const Ray& ray, const Hit& hit, float* layer_scale) const {
+  // A moving shape is hit where it stands at the ray's time, not where the frame
+  // has it (`world`): its own shape placed by Embree's interpolated transform, the
+  // one the ray was traced through (docs/architecture.md, "Motion blur").
+  const Transform at = placement(hit.geometry, ray.time);
+  *layer_scale = stretch(at);
+  const Shape& shape = *impl_->instances[hit.geometry].local;
+  if (const auto* mesh = std::get_if<TriangleMesh>(&shape)) return triangle_interaction<true>(*mesh, hit, ray, &at);
+  const Sphere& sphere = std::get<Sphere>(shape);
+  return Sphere{sphere.center, sphere.radius, at * sphere.to_world}.interaction(ray, hit.t);
+}
+
 SurfaceInteraction EmbreeScene::interaction(const Ray& ray, const Hit& hit) const {
   const Instance& instance = impl_->instances[hit.geometry];
   const Shape& shape = *instance.world;
-  SurfaceInteraction si = std::holds_alternative<TriangleMesh>(shape)
-                              ? triangle_interaction(std::get<TriangleMesh>(shape), hit, ray)
+  float layer_scale = 1.f;
+  SurfaceInteraction si = instance.moving ? moving_interaction(ray, hit, &layer_scale)
+                          : std::holds_alternative<TriangleMesh>(shape)
+                              ? triangle_interaction<false>(std::get<TriangleMesh>(shape), hit, ray)
                               : std::get<Sphere>(shape).interaction(ray, hit.t);
   si.object = hit.geometry;
+  si.time = ray.time;
   const AlphaMask* mask = instance.bvh->mask();
   if (mask && mask->paint && mask->layer_thickness > 0.f) {
     // Paint is seen in painting order, not by height, so its shading point may
@@ -536,7 +704,7 @@ SurfaceInteraction EmbreeScene::interaction(const Ray& ray, const Hit& hit) cons
     // then start clear of the paint around it instead of testing and refusing
     // every stroke there (the layer test in alpha_accepts).
     const float side = glm::dot(ray.d, si.ng) < 0.f ? 1.f : -1.f;
-    si.p += side * mask->layer_thickness * si.ng;
+    si.p += side * (mask->layer_thickness * layer_scale) * si.ng;
     si.p_error += Vec3(gamma_bound(2) * max_component(glm::abs(si.p)));
   }
   return si;
@@ -547,6 +715,15 @@ void EmbreeScene::bounds(Point3* lo, Point3* hi) const {
   rtcGetSceneBounds(impl_->scene, &b);
   *lo = {b.lower_x, b.lower_y, b.lower_z};
   *hi = {b.upper_x, b.upper_y, b.upper_z};
+  if (!impl_->any_moving) return;
+  // Bounds at the shutter's opening and closing, between which Embree's linear
+  // bounds hold everything at every instant.
+  alignas(16) RTCLinearBounds moving;
+  rtcGetSceneLinearBounds(impl_->scene, &moving);
+  for (const RTCBounds& at : {moving.bounds0, moving.bounds1}) {
+    *lo = glm::min(*lo, Point3(at.lower_x, at.lower_y, at.lower_z));
+    *hi = glm::max(*hi, Point3(at.upper_x, at.upper_y, at.upper_z));
+  }
 }
 
 }  // namespace inkray

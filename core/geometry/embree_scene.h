@@ -14,6 +14,7 @@
 #include <vector>
 
 struct RTCSceneTy;
+struct RTCGeometryTy;
 
 namespace inkray {
 
@@ -90,6 +91,17 @@ class EmbreeScene {
   // other shapes are seen by every ray.
   uint32_t add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
                std::shared_ptr<const Shape> world, bool indirect = true);
+  // A shared bottom level that moves while the shutter is open (docs/architecture.md,
+  // "Motion blur"): placed by `open` at time 0 and by `close` at time 1, an Embree
+  // instance of two time steps in between (scale and shear and the translation
+  // interpolated linearly, the rotation by slerp, so a turning object keeps its size).
+  // A hit is computed from `local`, the shape in the BVH's own space (the BVH's shape,
+  // or the same mesh with other vertex colours), placed where the instance stands at
+  // the ray's time; `world`, the shape at the frame, is what lights, strokes and
+  // shape() read.
+  uint32_t add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open, const Transform& close,
+                      std::shared_ptr<const Shape> local, std::shared_ptr<const Shape> world,
+                      bool indirect = true);
   void commit();
   // Whether `other` places the same BVHs, by the same transforms, with the same
   // world shapes: then its committed top level can stand for this one.
@@ -105,18 +117,32 @@ class EmbreeScene {
   // The shape's alpha mask, or null for an opaque shape.
   const AlphaMask* alpha_mask(uint32_t index) const { return impl_->instances[index].bvh->mask(); }
   const ShapeBvh& bvh(uint32_t index) const { return *impl_->instances[index].bvh; }
-  // Bounds of everything, for directional and environment lights.
+  // Whether the shape moves while the shutter is open (add_moving), and whether any does.
+  bool moving(uint32_t index) const { return impl_->instances[index].moving; }
+  bool any_moving() const { return impl_->any_moving; }
+  // Where the shape's BVH is placed at shutter instant `time` in [0, 1]: for a moving
+  // shape Embree's own interpolation (the one rays are traced through); after commit().
+  Transform placement(uint32_t index, float time) const;
+  // Bounds of everything (over the whole shutter), for directional and environment lights.
   void bounds(Point3* lo, Point3* hi) const;
 
  private:
   struct Instance {
     std::shared_ptr<const ShapeBvh> bvh;
-    Transform to_world;
+    Transform to_world;  // at the shutter's opening when it moves
     std::shared_ptr<const Shape> world;
     bool indirect = true;  // RayKind::indirect rays see it
+    // Moving (add_moving): placed by to_close at the shutter's closing; hits read `local`.
+    bool moving = false;
+    Transform to_close{};
+    std::shared_ptr<const Shape> local{};
   };
   struct Impl {
     std::vector<Instance> instances;
+    // The Embree instance of each moving shape (null for the others), kept to ask it
+    // where it stands at a time.
+    std::vector<RTCGeometryTy*> motion;
+    bool any_moving = false;
     // Paint seen by camera rays, and by indirect rays, in instance order, when
     // every paint instance is placed by the identity (strokes are built in world
     // space): the paint-order query then asks their BVHs directly.
@@ -130,7 +156,11 @@ class EmbreeScene {
   };
   // Replaces a hit on paint by the last-painted paint the ray passes through
   // there (AlphaMask::paint).
-  void resolve_paint(const Ray& ray, const AlphaMask& mask, const Vec3& ng, RayKind kind, Hit* hit) const;
+  // `layer_thickness`: the hit paint's, in world units; `ng` its normal in world space.
+  void resolve_paint(const Ray& ray, float layer_thickness, const Vec3& ng, RayKind kind, Hit* hit) const;
+  // The hit on a moving shape, where it stands at the ray's time; *layer_scale is
+  // how much its placement then stretches a paint layer.
+  SurfaceInteraction moving_interaction(const Ray& ray, const Hit& hit, float* layer_scale) const;
   // A camera ray's hit on a surface: the last-painted camera paint on it, if
   // any, replaces it.
   void paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) const;

@@ -6,7 +6,8 @@
 
 namespace inkray {
 
-void gather_light_inputs(const RenderScene& scene, const LightReference& ref, ShadingPoint& sp, uint32_t* rays) {
+void gather_light_inputs(const RenderScene& scene, const LightReference& ref, float time, ShadingPoint& sp,
+                         uint32_t* rays) {
   sp.n_dot_l = 0.f;
   sp.shadow = 0.f;
   sp.light_color = Color(0.f);
@@ -22,6 +23,7 @@ void gather_light_inputs(const RenderScene& scene, const LightReference& ref, Sh
   sp.n_dot_l = std::max(0.f, glm::dot(sp.ns, best->wi));
   sp.light_color = best->radiance / std::max(max_component(best->radiance), 1e-20f);
   ++*rays;
+  best->shadow_ray.time = time;
   sp.shadow = scene.geometry.occluded(best->shadow_ray, best->shadow_t_max) ? 0.f : 1.f;
 }
 

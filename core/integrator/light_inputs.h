@@ -10,7 +10,9 @@ namespace inkray {
 
 // Fills sp's light inputs. The strongest light is the one whose unshadowed radiance
 // (sampled at the centre of area lights) has the largest luminance; *rays counts
-// the shadow ray. Without lights: n_dot_l 0, shadow 0, colour black.
-void gather_light_inputs(const RenderScene& scene, const LightReference& ref, ShadingPoint& sp, uint32_t* rays);
+// the shadow ray, traced at shutter instant `time`. Without lights: n_dot_l 0,
+// shadow 0, colour black.
+void gather_light_inputs(const RenderScene& scene, const LightReference& ref, float time, ShadingPoint& sp,
+                         uint32_t* rays);
 
 }  // namespace inkray

@@ -64,17 +64,20 @@ void add_escaped(const RenderScene& scene, const PathState& st, PathResult& resu
 }
 
 // Next-event estimation: one light chosen by power, MIS-weighted against the BSDF.
+// Lights stand where the frame has them; the shadow ray sees the rest at the
+// path's instant (docs/architecture.md, "Motion blur").
 void add_direct_light(const RenderScene& scene, const Bsdf& bsdf, const Frame& frame, const Vec3& wo_local,
                       const LightReference& ref, float u_light, Vec2 u_position, const PathState& st,
                       PathResult& result) {
   float pmf = 0.f;
   const size_t li = scene.light_selection.sample(u_light, &pmf);
-  const auto ls = sample_light(scene, scene.lights[li], ref, u_position);
+  auto ls = sample_light(scene, scene.lights[li], ref, u_position);
   if (!ls) return;
   const Vec3 wi_local = frame.to_local(ls->wi);
   const Color f = bsdf_eval(bsdf, wo_local, wi_local) * std::abs(wi_local.z);
   if (is_black(f)) return;
   ++result.rays;
+  ls->shadow_ray.time = st.ray.time;
   if (scene.geometry.occluded(ls->shadow_ray, ls->shadow_t_max)) return;
   const float light_pdf_total = pmf * ls->pdf;
   const float w = ls->is_delta ? 1.f : power_heuristic(light_pdf_total, bsdf_pdf(bsdf, wo_local, wi_local));
@@ -93,7 +96,7 @@ bool scatter(const Sampler& sampler, const Bsdf& bsdf, const Frame& frame, const
   st.prev_pdf = bs->pdf;
   st.prev_ref = ref;
   if (bs->is_transmission) st.eta_scale *= sqr(bs->eta);
-  st.ray = spawn_ray(si.p, si.p_error, ref.n, frame.to_world(bs->wi));
+  st.ray = spawn_ray(si, ref.n, frame.to_world(bs->wi));
 
   // Russian roulette on throughput, undoing the radiance scaling of refraction
   // so paths inside glass are not killed for it (pbrt-v4).
@@ -194,7 +197,7 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
     if (material_flags(*chosen).resolves) {
       ShadingPoint sp = scene_shading_point(scene, si, wo, st.path_length);
       if (material_uses_light(scene.materials, material_index))
-        gather_light_inputs(scene, LightReference{si.p, si.p_error, sp.ng}, sp, &result.rays);
+        gather_light_inputs(scene, LightReference{si.p, si.p_error, sp.ng}, si.time, sp, &result.rays);
       const ResolvedMaterial r =
           resolve_material(scene.materials, material_index, sp, sampler.get_pair(pairs + 3).x, scratch);
       if (!r.material) break;

@@ -88,7 +88,9 @@ LightTerm environment_term(const RenderScene& scene, const EnvironmentLight& env
     const Vec3 wi = Frame::from_z(hit.ns).to_world(sample_cosine_hemisphere(u));
     if (!(glm::dot(hit.ref.n, wi) > 0.f)) return t;  // into the surface itself
     ++*rays;
-    if (scene.geometry.occluded(spawn_ray(hit.ref.p, hit.ref.p_error, hit.ref.n, wi), kInfinity)) return t;
+    Ray shadow = spawn_ray(hit.ref.p, hit.ref.p_error, hit.ref.n, wi);
+    shadow.time = hit.si->time;
+    if (scene.geometry.occluded(shadow, kInfinity)) return t;
   }
   t.received = m.environment * glm::max(sky_irradiance(env, hit.ns.y), Color(0.f));
   return t;
@@ -99,7 +101,7 @@ LightTerm light_term(const RenderScene& scene, const Light& light, const ToonMat
   if (const auto* env = std::get_if<EnvironmentLight>(&light))
     return environment_term(scene, *env, m, hit, u, rays);
   LightTerm t;
-  const auto ls = sample_light(scene, light, hit.ref, u);
+  auto ls = sample_light(scene, light, hit.ref, u);
   if (const auto* spot = std::get_if<SpotLight>(&light)) {
     const Vec3 d = spot->position - hit.ref.p;
     t.reference = spot->intensity / std::max(glm::dot(d, d), 1e-20f);
@@ -111,6 +113,7 @@ LightTerm light_term(const RenderScene& scene, const Light& light, const ToonMat
   // Light below the geometric surface would need a shadow ray through it.
   if (!(cos_n > 0.f) || !(glm::dot(hit.ref.n, ls->wi) > 0.f)) return t;
   ++*rays;
+  ls->shadow_ray.time = hit.si->time;  // lights stand at the frame; the rest at the hit's instant
   if (scene.geometry.occluded(ls->shadow_ray, ls->shadow_t_max)) return t;
   t.wi = ls->wi;
   t.received = (ls->radiance / ls->pdf) * cos_n;

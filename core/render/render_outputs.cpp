@@ -5,30 +5,64 @@
 #include "core/film/aov_display.h"
 #include "core/film/resolve.h"
 #include "core/image/image_io.h"
+#include "core/io/atomic_file.h"
 #include "core/io/output_set.h"
 
 namespace inkray {
+namespace {
 
-OutputsWritten write_render_outputs(RenderSession& session, const std::filesystem::path& image,
-                                    const std::vector<AovFile>& aovs, std::string* error, const Cancel& cancel) {
+// The window's pixels of an image of the whole film (the image itself without a window).
+RgbImage crop_image(RgbImage image, const PixelWindow& crop) {
+  if (crop.empty()) return image;
+  RgbImage out{crop.width(), crop.height(), std::vector<Color>(size_t(crop.width()) * size_t(crop.height()))};
+  for (int y = 0; y < crop.height(); ++y)
+    for (int x = 0; x < crop.width(); ++x)
+      out.pixels[size_t(y) * size_t(crop.width()) + size_t(x)] = image.at(crop.x0 + x, crop.y0 + y);
+  return out;
+}
+
+}  // namespace
+
+OutputsWritten write_film_outputs(const Film& film, const RenderSettings& settings,
+                                  const OutlineDesc& outlines, const std::filesystem::path& image,
+                                  const std::vector<AovFile>& aovs, std::string* error, ThreadBudget* pool,
+                                  const Cancel& cancel, const PixelWindow& crop) {
   constexpr OutputsWritten kFailed = OutputsWritten::failed;
   OutputSet outputs;
   std::string bytes;
   // Lines are composited for the display a PNG is encoded with (exposure 0, standard
   // view); a linear file holds the same pixels, so viewing it that way shows them too.
-  const RgbImage final_image =
-      resolve_final(session.film(), session.scene(), kFileDisplay, &session.pool(), cancel);
+  RgbImage final_image = resolve_final(film, settings, outlines, kFileDisplay, pool, cancel);
   if (final_image.pixels.empty()) {
     *error = image.string() + ": cancelled while applying the painterly filter; nothing was written";
     return OutputsWritten::cancelled;
   }
-  if (!encode_image(image, final_image, &bytes, error) || !outputs.stage(image, bytes, error)) return kFailed;
+  if (!encode_image(image, crop_image(std::move(final_image), crop), &bytes, error) ||
+      !outputs.stage(image, bytes, error))
+    return kFailed;
   for (const AovFile& a : aovs) {
-    RgbImage img = session.film().resolve_aov(a.aov);
+    RgbImage img = crop_image(film.resolve_aov(a.aov), crop);
     if (image_format_of(a.file) == ImageFormat::png) img = aov_for_display(a.aov, img);
     if (!encode_image(a.file, img, &bytes, error) || !outputs.stage(a.file, bytes, error)) return kFailed;
   }
   return outputs.commit(error) ? OutputsWritten::all : kFailed;
+}
+
+OutputsWritten write_render_outputs(RenderSession& session, const std::filesystem::path& image,
+                                    const std::vector<AovFile>& aovs, std::string* error,
+                                    const Cancel& cancel, const PixelWindow& crop) {
+  return write_film_outputs(session.film(), session.scene().settings, session.scene().outlines, image, aovs,
+                            error, &session.pool(), cancel, crop);
+}
+
+bool write_partial_file(const Film& film, const PartialInfo& info, const std::filesystem::path& file,
+                        std::string* error) {
+  std::string bytes;
+  if (!encode_partial(film, info, &bytes, error)) {
+    *error = file.string() + ": " + *error;
+    return false;
+  }
+  return write_file_atomically(file, bytes, error);
 }
 
 }  // namespace inkray

@@ -5,6 +5,7 @@
 
 #include "core/base/cancel.h"
 #include "core/film/film.h"
+#include "core/film/film_partial.h"
 #include "core/image/view_transform.h"
 #include "core/render/render_session.h"
 
@@ -28,8 +29,21 @@ inline constexpr DisplayEncoding kFileDisplay{0.f, ViewTransform::standard};
 
 // Stages every file, then renames them all in. On `failed`, *error names the file
 // that failed and no target has been touched. `cancel` stops the painterly filter
-// (seconds at a large radius): `cancelled`, and nothing is written.
+// (seconds at a large radius): `cancelled`, and nothing is written. `crop`, when
+// not empty, writes only those pixels of the image and the AOVs (a crop window
+// rendered alone: the painterly filter sees nothing outside it).
 OutputsWritten write_render_outputs(RenderSession& session, const std::filesystem::path& image,
-                                    const std::vector<AovFile>& aovs, std::string* error, const Cancel& cancel = {});
+                                    const std::vector<AovFile>& aovs, std::string* error,
+                                    const Cancel& cancel = {}, const PixelWindow& crop = {});
+// The same for a film without its session (inkray-merge), resolved with these
+// settings and outlines exactly as a session's film would be.
+OutputsWritten write_film_outputs(const Film& film, const RenderSettings& settings,
+                                  const OutlineDesc& outlines, const std::filesystem::path& image,
+                                  const std::vector<AovFile>& aovs, std::string* error,
+                                  ThreadBudget* pool = nullptr, const Cancel& cancel = {},
+                                  const PixelWindow& crop = {});
+// A partial file (film_partial.h) of info.window of `film`, replaced atomically.
+bool write_partial_file(const Film& film, const PartialInfo& info, const std::filesystem::path& file,
+                        std::string* error);
 
 }  // namespace inkray

@@ -1,7 +1,6 @@
 #include "core/render/render_session.h"
 
 #include "core/integrator/path_tracer.h"
-#include "core/npr/outlines/line_sampling.h"
 
 #include <cmath>
 
@@ -20,6 +19,35 @@ Vec2 filter_offset(const RenderSettings& settings, Vec2 u) {
   return glm::clamp(Vec2(radius * std::cos(phi), radius * std::sin(phi)), Vec2(-r), Vec2(r));
 }
 
+// The camera sample of pixel (x, y): where on the film and the lens its ray starts.
+struct CameraSample {
+  Vec2 film_pos, lens;
+  Ray ray;
+};
+
+CameraSample camera_sample(const RenderScene& scene, const Sampler& sampler, int x, int y, float scale) {
+  CameraSample s;
+  s.film_pos =
+      (Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_pair(0))) * scale;
+  s.lens = sampler.get_pair(1);
+  // The sample's instant of the shutter, drawn only while it is open for a time:
+  // without motion blur every sample stream is as it was.
+  const float time = scene.settings.motion_blur() ? sampler.get_time() : 0.f;
+  s.ray = scene.camera.generate_ray(s.film_pos, s.lens, time);
+  return s;
+}
+
+// What trace_path's first intersection reports as PrimaryHit, without the path.
+PrimaryHit camera_hit(const RenderScene& scene, const Ray& ray) {
+  PrimaryHit primary;
+  Hit hit;
+  if (!scene.geometry.intersect(ray, kInfinity, &hit, RayKind::camera)) return primary;
+  primary.hit = true;
+  primary.si = scene.geometry.interaction(ray, hit);
+  primary.distance = 0.f + hit.t * glm::length(ray.d);
+  return primary;
+}
+
 }  // namespace
 
 RenderSession::RenderSession(int threads) : pool_(threads), worker_rays_(size_t(pool_.size()), 0) {}
@@ -32,8 +60,61 @@ void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet a
   lines_ = make_line_setup(*scene_, divisor_);
   film_ = std::make_unique<Film>(width, height, aovs, lines_.active);
   stats_ = {};
+  first_pass_ = 0;
   tiles_done_.clear();
-  near_line_.clear();
+  line_pixels_.clear();
+  if (lines_.active) line_pixels_.assign(size_t(width) * size_t(height), LinePixel{});
+}
+
+void RenderSession::restart_region(int x0, int y0, int x1, int y1) {
+  film_->clear_region(x0, y0, x1, y1);
+  stats_ = {};
+  first_pass_ = 0;
+  tiles_done_.clear();
+  set_region(x0, y0, x1, y1);
+  // The region's pixels probe again; those around it keep what they know, which
+  // the region's line map reads.
+  if (line_pixels_.empty()) return;
+  const PixelWindow w = active_window();
+  for (int y = w.y0; y < w.y1; ++y)
+    for (int x = w.x0; x < w.x1; ++x)
+      line_pixels_[size_t(y) * size_t(film_->width()) + size_t(x)] = LinePixel{};
+}
+
+PixelWindow RenderSession::active_window() const {
+  const PixelWindow whole{0, 0, film_->width(), film_->height()};
+  if (region_.empty()) return whole;
+  return {std::max(region_.x0, 0), std::max(region_.y0, 0), std::min(region_.x1, whole.x1),
+          std::min(region_.y1, whole.y1)};
+}
+
+PixelWindow RenderSession::tile_window(int tile) const {
+  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
+  const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+  return {x0, y0, std::min(x0 + kTileSize, film_->width()), std::min(y0 + kTileSize, film_->height())};
+}
+
+template <class F>
+void RenderSession::for_margin_pixels(int tile, uint32_t pass, F&& f) const {
+  if (!lines_.active || !lines_.adaptive || pass >= kLineProbeSamples || region_.empty()) return;
+  const PixelWindow r = active_window(), t = tile_window(tile);
+  const int reach = line_reach(lines_);
+  const int y0 = std::max(t.y0, r.y0 - reach), y1 = std::min(t.y1, r.y1 + reach);
+  const int x0 = std::max(t.x0, r.x0 - reach), x1 = std::min(t.x1, r.x1 + reach);
+  const uint32_t probed = pass * uint32_t(lines_.quality);
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      if (r.contains(x, y)) continue;
+      // Only pixels that have probed exactly the passes before: a pixel rendered
+      // before (the editor's region inside a finished film) keeps what it knows.
+      const LinePixel& p = line_pixels_[size_t(y) * size_t(film_->width()) + size_t(x)];
+      if (p.kind == LineKind::probing && p.rays == probed) f(x, y);
+    }
+}
+
+void RenderSession::finish_probes(uint32_t pass) {
+  if (lines_.active && lines_.adaptive && pass + 1 == kLineProbeSamples)
+    mark_line_neighbourhoods(line_pixels_, film_->width(), film_->height(), lines_, active_window());
 }
 
 bool RenderSession::render_pass() {
@@ -54,66 +135,157 @@ bool RenderSession::render_pass() {
   stats_.elapsed_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled_.load(std::memory_order_relaxed)) return false;
   std::fill(tiles_done_.begin(), tiles_done_.end(), 0);
-  if (lines_.active && lines_.adaptive && stats_.passes + 1 >= kLineProbeSamples)
-    mark_line_neighbourhoods(*film_, lines_, near_line_);
+  finish_probes(pass);
   ++stats_.passes;
   ++stats_.spp;
   for (uint64_t r : worker_rays_) stats_.rays += r;
   stats_.paths += uint64_t(film_->width()) * uint64_t(film_->height());
   stats_.nonfinite_samples = film_->nonfinite_samples();
-  stats_.relative_error = stats_.passes >= 2 ? film_->estimated_relative_error() : 0.0;
+  stats_.relative_error = stats_.spp >= 2 ? film_->estimated_relative_error() : 0.0;
   return true;
+}
+
+LineSample RenderSession::trace_lines_only(int x, int y, uint32_t pass, int count, uint64_t* rays) const {
+  const RenderScene& scene = *scene_;
+  const uint32_t seed = uint32_t(scene.settings.seed);
+  const Sampler sampler(uint32_t(x), uint32_t(y), pass, seed);
+  const CameraSample cs = camera_sample(scene, sampler, x, y, float(divisor_));
+  const PrimaryHit primary = camera_hit(scene, cs.ray);
+  const LinePixel& p = line_pixels_[size_t(y) * size_t(film_->width()) + size_t(x)];
+  const StencilDraw draw{uint32_t(x), uint32_t(y), p.rays, seed, count};
+  uint32_t traced = 1;
+  const LineSample s = detect_lines(scene, lines_, scene.camera, cs.film_pos, cs.lens, cs.ray, primary,
+                                    sampler.get_pair(kFirstHitMixPair).x, draw, &traced);
+  *rays += traced;
+  return s;
 }
 
 void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
   const RenderScene& scene = *scene_;
-  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
-  const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-  int x1 = std::min(x0 + kTileSize, film_->width()), y1 = std::min(y0 + kTileSize, film_->height());
-  const auto [rx0, ry0, rx1, ry1] = region_;
-  const bool has_region = rx1 > rx0 && ry1 > ry0;
-  const int sx0 = has_region ? std::max(x0, rx0) : x0, sy0 = has_region ? std::max(y0, ry0) : y0;
-  if (has_region) x1 = std::min(x1, rx1), y1 = std::min(y1, ry1);
+  const PixelWindow t = tile_window(tile), r = active_window();
+  const int x0 = std::max(t.x0, r.x0), x1 = std::min(t.x1, r.x1);
+  const int y0 = std::max(t.y0, r.y0), y1 = std::min(t.y1, r.y1);
   const float scale = float(divisor_);
   const Camera& camera = scene.camera;
   const bool want_first_hit = film_->aovs().any_first_hit();
   const float clamp = scene.settings.clamp;
   const uint32_t seed = uint32_t(scene.settings.seed);
+  const size_t width = size_t(film_->width());
   uint64_t rays = 0;
-  for (int y = sy0; y < y1; ++y) {
-    for (int x = sx0; x < x1; ++x) {
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
       const Sampler sampler(uint32_t(x), uint32_t(y), pass, seed);
-      const Vec2 film_pos =
-          (Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_pair(0))) * scale;
-      const Vec2 lens = sampler.get_pair(1);
-      const Ray ray = camera.generate_ray(film_pos, lens);
+      const CameraSample cs = camera_sample(scene, sampler, x, y, scale);
       FirstHit first_hit;
       PrimaryHit primary;
       // Adaptive line sampling decides before the path is traced, so a sample
       // that needs no lines does not keep the camera hit for them.
       StencilDraw draw;
+      LinePixel* line_pixel = nullptr;
       if (lines_.active) {
-        const LineSample& so_far = film_->line_sum(x, y);
-        draw = {uint32_t(x), uint32_t(y), uint32_t(so_far.rays), seed,
-                stencil_rays(lines_, so_far, film_->line_samples(x, y), near_line(x, y), uint32_t(x), uint32_t(y), pass, seed)};
+        line_pixel = &line_pixels_[size_t(y) * width + size_t(x)];
+        draw = {uint32_t(x), uint32_t(y), line_pixel->rays, seed,
+                stencil_rays(lines_, *line_pixel, uint32_t(x), uint32_t(y), pass, seed)};
       }
       const bool lines = lines_.active && draw.count > 0;
-      PathResult r =
-          trace_path(scene, camera, ray, sampler, want_first_hit ? &first_hit : nullptr, lines ? &primary : nullptr);
+      PathResult res = trace_path(scene, camera, cs.ray, sampler, want_first_hit ? &first_hit : nullptr,
+                                  lines ? &primary : nullptr);
       if (lines) {
         const float u_mix = sampler.get_pair(kFirstHitMixPair).x;
-        film_->add_lines(x, y, detect_lines(scene, lines_, camera, film_pos, lens, ray, primary, u_mix, draw, &r.rays));
+        const LineSample found = detect_lines(scene, lines_, camera, cs.film_pos, cs.lens, cs.ray, primary,
+                                              u_mix, draw, &res.rays);
+        film_->add_lines(x, y, found);
+        record_line_sample(lines_, *line_pixel, found);
       }
-      rays += r.rays;
+      rays += res.rays;
       if (clamp > 0.f) {
-        const float lum = luminance(r.radiance);
-        if (lum > clamp) r.radiance *= clamp / lum;
+        const float lum = luminance(res.radiance);
+        if (lum > clamp) res.radiance *= clamp / lum;
       }
-      film_->add_sample(x, y, pass, r.radiance);
+      film_->add_sample(x, y, pass, res.radiance);
       if (want_first_hit) film_->add_first_hit(x, y, first_hit);
     }
   }
+  for_margin_pixels(tile, pass, [&](int x, int y) {
+    LinePixel& p = line_pixels_[size_t(y) * width + size_t(x)];
+    const int count = stencil_rays(lines_, p, uint32_t(x), uint32_t(y), pass, seed);
+    record_line_sample(lines_, p, trace_lines_only(x, y, pass, count, &rays));
+  });
   worker_rays_[size_t(worker)] += rays;
+}
+
+void RenderSession::replay_tile(int tile, uint32_t pass) {
+  const PixelWindow t = tile_window(tile), r = active_window();
+  const uint32_t seed = uint32_t(scene_->settings.seed);
+  const size_t width = size_t(film_->width());
+  uint64_t rays = 0;  // not counted: the session's statistics are of its own passes
+  const auto replay = [&](int x, int y) {
+    LinePixel& p = line_pixels_[size_t(y) * width + size_t(x)];
+    const int count = stencil_rays(lines_, p, uint32_t(x), uint32_t(y), pass, seed);
+    if (count <= 0) return;
+    if (line_decision_pending(lines_, p)) {
+      record_line_sample(lines_, p, trace_lines_only(x, y, pass, count, &rays));
+    } else {
+      p.rays += uint32_t(count);  // no decision reads these rays: their count is all that follows
+    }
+  };
+  for (int y = std::max(t.y0, r.y0); y < std::min(t.y1, r.y1); ++y)
+    for (int x = std::max(t.x0, r.x0); x < std::min(t.x1, r.x1); ++x) replay(x, y);
+  for_margin_pixels(tile, pass, replay);
+}
+
+void RenderSession::continue_from(uint32_t first, uint32_t next, const std::vector<uint8_t>& tiles_done) {
+  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
+  const int tiles_y = (film_->height() + kTileSize - 1) / kTileSize;
+  const size_t tiles = size_t(tiles_x * tiles_y);
+  const bool in_progress = tiles_done.size() == tiles;
+  if (lines_.active) {
+    const PixelWindow r = active_window();
+    const size_t width = size_t(film_->width());
+    // Pass by pass while decisions are pending; then each pixel's count at once.
+    uint32_t pass = 0;
+    for (; pass < next; ++pass) {
+      if (pass >= kLineProbeSamples || !lines_.adaptive) {
+        bool pending = false;
+        for (int y = r.y0; y < r.y1 && !pending; ++y)
+          for (int x = r.x0; x < r.x1 && !pending; ++x)
+            pending = line_decision_pending(lines_, line_pixels_[size_t(y) * width + size_t(x)]);
+        if (!pending) break;
+      }
+      pool_.parallel_for(int(tiles), [&](int tile, int) { replay_tile(tile, pass); });
+      finish_probes(pass);
+    }
+    const uint32_t seed = uint32_t(scene_->settings.seed);
+    if (pass < next)
+      pool_.parallel_for(r.height(), [&](int row, int) {
+        const int y = r.y0 + row;
+        for (int x = r.x0; x < r.x1; ++x) {
+          LinePixel& p = line_pixels_[size_t(y) * width + size_t(x)];
+          p.rays += stencil_rays_between(lines_, p, uint32_t(x), uint32_t(y), pass, next, seed);
+        }
+      });
+    if (in_progress)
+      pool_.parallel_for(int(tiles), [&](int tile, int) {
+        if (tiles_done[size_t(tile)]) replay_tile(tile, next);
+      });
+  }
+  first_pass_ = first;
+  stats_ = {};
+  stats_.passes = next;
+  stats_.spp = next - first;
+  stats_.nonfinite_samples = film_->nonfinite_samples();
+  if (in_progress)
+    tiles_done_ = tiles_done;
+  else
+    tiles_done_.clear();
+}
+
+void RenderSession::load_film(const Film& window_film) {
+  const PixelWindow w = active_window();
+  for (int y = 0; y < std::min(window_film.height(), w.height()); ++y)
+    for (int x = 0; x < std::min(window_film.width(), w.width()); ++x)
+      film_->add_pixel(w.x0 + x, w.y0 + y, window_film.pixel(x, y));
+  film_->add_nonfinite(window_film.nonfinite_samples());
 }
 
 }  // namespace inkray

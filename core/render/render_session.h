@@ -6,6 +6,7 @@
 #include "core/base/parallel.h"
 #include "core/film/film.h"
 #include "core/npr/outlines/line_detector.h"
+#include "core/npr/outlines/line_sampling.h"
 #include "core/world/render_scene.h"
 
 #include <array>
@@ -17,8 +18,9 @@
 namespace inkray {
 
 struct RenderStats {
-  uint32_t passes = 0;
-  uint32_t spp = 0;
+  uint32_t passes = 0;  // the pass the next render_pass renders (passes of the sample sequence so far)
+  uint32_t spp = 0;     // samples per pixel in the film: passes since the film's first
+
   double elapsed_seconds = 0.0;  // time spent in passes since the scene was set
   double relative_error = 0.0;   // estimated from the half-buffers; 0 until two passes exist
   uint64_t rays = 0;
@@ -43,15 +45,25 @@ class RenderSession {
   // Restricts passes to film pixels in [x0,x1) x [y0,y1) (a render region);
   // an empty rectangle means the whole film. Pixels outside keep their sums.
   void set_region(int x0, int y0, int x1, int y1) { region_ = {x0, y0, x1, y1}; }
+  void set_region(const PixelWindow& w) { region_ = w; }
   // Starts the region's accumulation again (stats from zero), keeping the film's
   // pixels outside it, and restricts passes to it.
-  void restart_region(int x0, int y0, int x1, int y1) {
-    film_->clear_region(x0, y0, x1, y1);
-    stats_ = {};
-    tiles_done_.clear();
-    near_line_.clear();
-    set_region(x0, y0, x1, y1);
-  }
+  void restart_region(int x0, int y0, int x1, int y1);
+  PixelWindow region() const { return region_; }
+  // The film holds passes [first, next) of the sample sequence, and of pass `next`
+  // the tiles marked in `tiles_done` (a render cut mid-pass), for the pixels of the
+  // region; the next render_pass renders pass `next`, completing a cut one. What
+  // adaptive line sampling decided in the passes before `next` is traced again
+  // (only what the decisions read: the probes and the rays of pixels still
+  // deciding) or counted, so every later pass traces what a render from pass 0
+  // would. Call on a film fresh from set_scene, or loaded with load_film.
+  // A slice of passes [A, B): continue_from(A, A), then B - A passes.
+  void continue_from(uint32_t first, uint32_t next, const std::vector<uint8_t>& tiles_done = {});
+  // Adds a film of the region's size (a checkpoint read back) at the region's place.
+  void load_film(const Film& window_film);
+  uint32_t first_pass() const { return first_pass_; }
+  // Tiles of the pass in progress already in the film (empty or all zero between passes).
+  const std::vector<uint8_t>& tiles_done() const { return tiles_done_; }
   int divisor() const { return divisor_; }
   // Swaps in a scene that differs from the current one only in what is read when
   // the film is resolved (line colours, the painterly filter, render limits: the
@@ -74,22 +86,31 @@ class RenderSession {
 
  private:
   void render_tile(int tile, int worker, uint32_t pass);
-  // Before the map exists every pixel counts as near a line.
-  bool near_line(int x, int y) const {
-    return near_line_.empty() || near_line_[size_t(y) * size_t(film_->width()) + size_t(x)];
-  }
+  // What render_tile decides about lines in pass `pass` of a tile, without the paths:
+  // traces only the samples a decision reads.
+  void replay_tile(int tile, uint32_t pass);
+  // Pixels whose probes the region's line map reads, beyond the region itself:
+  // in a probe pass they trace their probe's lines (only), as in a render of the
+  // whole film. Calls f(x, y) for each in the tile.
+  template <class F> void for_margin_pixels(int tile, uint32_t pass, F&& f) const;
+  PixelWindow tile_window(int tile) const;
+  PixelWindow active_window() const;  // the region, or the whole film
+  // The lines of the sample (x, y, pass) alone, as render_tile finds them, given `count` rays.
+  LineSample trace_lines_only(int x, int y, uint32_t pass, int count, uint64_t* rays) const;
+  void finish_probes(uint32_t pass);
 
   ThreadBudget pool_;
   std::shared_ptr<const RenderScene> scene_;
   std::unique_ptr<Film> film_;
   LineSetup lines_;  // what the scene's outlines ask of every sample
-  std::vector<uint8_t> near_line_;  // per film pixel, from the passes done (line_sampling.h)
+  std::vector<LinePixel> line_pixels_;  // per film pixel: adaptive line sampling's state
+  uint32_t first_pass_ = 0;
   RenderStats stats_;
   std::atomic<bool> cancelled_{false};
   std::vector<uint64_t> worker_rays_;  // one slot per worker: no shared counter on the hot path
   std::vector<uint8_t> tiles_done_;  // tiles of the pass in progress already in the film
   int divisor_ = 1;
-  std::array<int, 4> region_{0, 0, 0, 0};
+  PixelWindow region_;
 };
 
 }  // namespace inkray

@@ -7,6 +7,11 @@
 
 namespace inkray {
 
+// The pair whose x is a camera sample's instant of the shutter (Sampler::get_time).
+// Far above the path's, the toon lights' (1 << 24) and the outline stencil's
+// (1 << 25) pairs, so drawing it changes no other decision's value.
+inline constexpr uint32_t kShutterPair = 1u << 26;
+
 class Sampler {
  public:
   Sampler(uint32_t pixel_x, uint32_t pixel_y, uint32_t sample_index, uint32_t seed)
@@ -22,6 +27,9 @@ class Sampler {
   float get_hashed(uint32_t dimension) const {
     return u32_to_unit_float(hash_combine(pixel_seed_, index_, dimension));
   }
+  // The sample's instant of the shutter, in [0, 1): stratified over the pixel's
+  // samples like every pair. Drawn only when the shutter is open for a time.
+  float get_time() const { return get_pair(kShutterPair).x; }
   uint32_t sample_index() const { return index_; }
 
  private:

@@ -34,6 +34,10 @@ struct RenderObject {
   uint32_t line_material = 0;  // material boundaries are drawn where this changes
   LineOverride lines;
   Transform to_object;  // world to the object's own space: where graph textures are fixed
+  // For a shape that moves while the shutter is open (EmbreeScene::moving): its BVH's
+  // space to the object's own space (the identity but for strokes, whose BVH lies
+  // where they grew). to_object is the frame's; hits at other instants use this.
+  Transform local_to_object{};
   // Smooth patch per triangle (prim) at the crease threshold, for crease lines: two
   // hits in different patches lie across a feature edge (geometry/mesh_features.h).
   // Null for spheres and strokes, and while crease lines are off.
@@ -58,6 +62,12 @@ struct RenderScene {
   const Material& material_of(uint32_t object) const { return materials[objects[object].material]; }
 };
 
+// Whether anything moves while the shutter is open: a shape or the camera
+// (docs/architecture.md, "Motion blur").
+inline bool moves_during_shutter(const RenderScene& scene) {
+  return scene.settings.motion_blur() && (scene.geometry.any_moving() || scene.camera.moves());
+}
+
 // The smooth patch of triangle `prim` of an object at the scene's crease threshold,
 // or kNoPatch where the object has none (docs/architecture.md, "Mesh normals and
 // feature edges").
@@ -75,7 +85,14 @@ inline ShadingPoint scene_shading_point(const RenderScene& scene, const SurfaceI
   sp.depth = depth;
   sp.object_id = object.source;
   sp.material_id = object.material;
-  sp.p_object = object.to_object.point(si.p);
+  // Textures stay fixed on a moving object: the hit is taken back through where the
+  // object stands at its instant (docs/architecture.md, "Motion blur").
+  if (!scene.geometry.moving(si.object)) {
+    sp.p_object = object.to_object.point(si.p);
+  } else {
+    const Transform at = scene.geometry.placement(si.object, si.time);
+    sp.p_object = object.local_to_object.point(Point3(at.inv * glm::vec4(si.p, 1.f)));
+  }
   return sp;
 }
 

@@ -1,6 +1,6 @@
 // The editor at the window sizes artists use (4K at twice the interface size, as its
-// monitor scale would give), under Xvfb: every reported control (the
-// viewport's and the render panel's toolbars) lies inside its panel's visible area and
+// monitor scale would give), under Xvfb: every reported control (the viewport's, the
+// timeline's and the render panel's toolbars) lies inside its panel's visible area and
 // inside the window, so nothing is cut off or unreachable. Screenshots are kept in the
 // test's temporary folder for looking at.
 #include "core/image/image_io.h"
@@ -90,16 +90,18 @@ TEST_P(EditorLayout, EveryToolbarControlIsInsideItsPanel) {
   const auto widgets = read_report(report, &window);
   EXPECT_EQ(window.x1, float(width));
   EXPECT_EQ(window.y1, float(height));
-  int viewport_controls = 0, render_controls = 0;
+  int viewport_controls = 0, render_controls = 0, timeline_controls = 0;
   for (const auto& [name, w] : widgets) {
     EXPECT_TRUE(inside(w.item, w.visible)) << name << " is clipped by its panel at " << size;
     EXPECT_TRUE(inside(w.item, window)) << name << " is outside the window at " << size;
     viewport_controls += name.rfind("viewport.", 0) == 0;
     render_controls += name.rfind("render.", 0) == 0;
+    timeline_controls += name.rfind("timeline.", 0) == 0;
   }
   // The toolbars report themselves; a renamed or lost report would make this test vacuous.
   EXPECT_GE(viewport_controls, 6) << "the viewport toolbar reported too few controls";
   EXPECT_GE(render_controls, 1) << "the render panel reported no controls";
+  EXPECT_GE(timeline_controls, 10) << "the timeline reported too few controls";
 }
 
 std::string size_name(const ::testing::TestParamInfo<WindowCase>& c) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -20,8 +21,9 @@ bool overlap(const PanelRect& a, const PanelRect& b) {
   return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
 }
 
+// The timeline comes first: its height is fixed rather than a usable minimum.
 std::vector<PanelRect> shown(const PanelRects& r, bool nodes) {
-  std::vector<PanelRect> v{r.scene, r.viewport, r.output, r.properties};
+  std::vector<PanelRect> v{r.timeline, r.scene, r.viewport, r.output, r.properties};
   if (nodes) v.push_back(r.node_editor);
   return v;
 }
@@ -43,7 +45,7 @@ TEST(PanelLayout, PanelsTileTheWindowAtEverySizeAndScale) {
           EXPECT_LE(p.x + p.w, size[0] + 0.01f);
           EXPECT_LE(p.y + p.h, size[1] + 0.01f);
           EXPECT_GE(p.w, 150.f);  // usable at every size
-          EXPECT_GE(p.h, 110.f);
+          EXPECT_GE(p.h, i == 0 ? std::floor(kTimelineHeight * scale) : 110.f);
           total += area(p);
           for (size_t j = i + 1; j < panels.size(); ++j) EXPECT_FALSE(overlap(p, panels[j])) << "with " << j;
         }
@@ -75,6 +77,10 @@ TEST(PanelLayout, DraggingASharedEdgeMovesThatEdge) {
     dragged.h += 50.f;
     after = place_panels(resized(layout, Panel::viewport, r, dragged, 1.f, nodes), 1600, 900, kTop, 1.f, nodes);
     EXPECT_NEAR(after.viewport.h, r.viewport.h + 50.f, 1.f);
+    // The timeline stays under the viewport, as tall as before.
+    EXPECT_NEAR(after.timeline.y, after.viewport.y + after.viewport.h, 0.01f);
+    EXPECT_FLOAT_EQ(after.timeline.h, r.timeline.h);
+    EXPECT_FLOAT_EQ(after.timeline.w, after.viewport.w);
   }
 }
 

@@ -121,7 +121,7 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     out.chain_length = chain + 1;
     out.blur += next->blur;
     const Normal3 side = glm::dot(next->direction, si.ng) > 0.f ? si.ng : -si.ng;
-    ray = spawn_ray(si.p, si.p_error, side, next->direction);
+    ray = spawn_ray(si, side, next->direction);  // at the hit's instant: the sample's
   }
   return out;
 }

@@ -1,0 +1,55 @@
+// Partial renders: a film's raw sums over a window of pixels and a range of
+// passes, in an OpenEXR file that says what it was rendered from, so that
+// partials rendered on many machines add up to the film one machine would have
+// rendered (docs/final-renders.md, "Partial files"; merging: partial_merge.h).
+// Checkpoints of long renders are partials too.
+#pragma once
+
+#include "core/film/film.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace inkray {
+
+inline constexpr std::string_view kPartialFormat = "inkray-partial";
+inline constexpr int kPartialVersion = 1;
+
+struct PartialInfo {
+  int width = 0, height = 0;  // the full image
+  PixelWindow window;         // the pixels held
+  // Passes [first_pass, end_pass) of every pixel's sample sequence.
+  uint32_t first_pass = 0, end_pass = 0;
+  // A checkpoint cut mid-pass also holds pass end_pass on these tiles of the full
+  // image (RenderSession::tiles_done); empty otherwise. Only a render resumes it.
+  std::vector<uint8_t> tiles_done;
+  float frame = 1.f;
+  int seed = 0;
+  std::string scene;       // the document rendered, as inkray writes it (scene_to_string)
+  AovSet aovs;             // first-hit AOVs held (outline AOVs come from the line sums)
+  bool lines = false;      // the line sums are held (the scene draws lines)
+  uint64_t nonfinite = 0;  // samples dropped as not finite
+};
+
+// The file's bytes for the pixels of info.window of `film`, which covers the
+// full image; the AOVs, lines and non-finite count are the film's. False with
+// *error on failure.
+bool encode_partial(const Film& film, const PartialInfo& info, std::string* bytes, std::string* error);
+// Reads a partial file: its header, and unless `film` is null its pixels as a
+// film of the window's size. Every problem (not an EXR, not a partial, a newer
+// version, a missing or mistyped attribute or channel, a truncated file) is one
+// line in *error naming the file and what was expected.
+bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::unique_ptr<Film>* film,
+                  std::string* error);
+
+// "samples 0-64 of pixels (0,0)-(32,16)", "(0,0)-(32,16)", "0-64" and
+// "albedo,depth" for messages and headers (ranges and windows half-open).
+std::string describe_partial(const PartialInfo& info);
+std::string describe_window(const PixelWindow& w);
+std::string describe_range(uint32_t first, uint32_t end);
+std::string first_hit_aov_names(const AovSet& aovs);
+
+}  // namespace inkray

@@ -1,0 +1,220 @@
+#include "core/film/partial_channels.h"
+
+#include <tinyexr.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace inkray {
+
+static_assert(kExrUint == TINYEXR_PIXELTYPE_UINT && kExrFloat == TINYEXR_PIXELTYPE_FLOAT);
+std::vector<PartialChannel> partial_channels(const PartialInfo& info) {
+  std::vector<PartialChannel> c;
+  const char* rgb[3] = {"R", "G", "B"};
+  const char* xyz[3] = {"X", "Y", "Z"};
+  for (int k = 0; k < 3; ++k) c.push_back({rgb[k], PartialField::preview, k, PartialStored::f32});
+  for (int k = 0; k < 3; ++k)
+    c.push_back({std::string("radiance.even.") + rgb[k], PartialField::sum_even, k, PartialStored::f64});
+  for (int k = 0; k < 3; ++k)
+    c.push_back({std::string("radiance.odd.") + rgb[k], PartialField::sum_odd, k, PartialStored::f64});
+  c.push_back({"count.even", PartialField::count_even, 0, PartialStored::u32});
+  c.push_back({"count.odd", PartialField::count_odd, 0, PartialStored::u32});
+  const AovSet& a = info.aovs;
+  if (a.has(Aov::albedo))
+    for (int k = 0; k < 3; ++k)
+      c.push_back({std::string("albedo.") + rgb[k], PartialField::albedo, k, PartialStored::f64});
+  if (a.has(Aov::normal))
+    for (int k = 0; k < 3; ++k)
+      c.push_back({std::string("normal.") + xyz[k], PartialField::normal, k, PartialStored::f64});
+  if (a.has(Aov::depth)) c.push_back({"depth.Z", PartialField::depth, 0, PartialStored::f64});
+  if (a.has(Aov::albedo) || a.has(Aov::normal) || a.has(Aov::depth))
+    c.push_back({"hits", PartialField::hits, 0, PartialStored::u32});
+  if (a.has(Aov::object_id)) c.push_back({"object_id", PartialField::object_id, 0, PartialStored::i32});
+  if (a.has(Aov::material_id)) c.push_back({"material_id", PartialField::material_id, 0, PartialStored::i32});
+  if (info.lines) {
+    for (int t = 0; t < kLineTypeCount; ++t)
+      c.push_back({"lines.coverage." + std::string(kLineTypeNames[size_t(t)]), PartialField::coverage, t,
+                   PartialStored::f64});
+    c.push_back({"lines.weight", PartialField::weight, 0, PartialStored::f64});
+    c.push_back({"lines.override_weight", PartialField::override_weight, 0, PartialStored::f64});
+    for (int k = 0; k < 3; ++k)
+      c.push_back({std::string("lines.override_color.") + rgb[k], PartialField::override_color, k,
+                   PartialStored::f64});
+    c.push_back({"lines.rays", PartialField::rays, 0, PartialStored::f64});
+    c.push_back({"lines.hit_rays", PartialField::hit_rays, 0, PartialStored::f64});
+    c.push_back({"lines.samples", PartialField::line_count, 0, PartialStored::u32});
+  }
+  return c;
+}
+
+double channel_value(const FilmPixel& p, PartialField f, int k) {
+  switch (f) {
+    case PartialField::preview: {
+      const uint32_t n = p.count[0] + p.count[1];
+      return n ? (p.sum[0][k] + p.sum[1][k]) / double(n) : 0.0;
+    }
+    case PartialField::sum_even:
+      return p.sum[0][k];
+    case PartialField::sum_odd:
+      return p.sum[1][k];
+    case PartialField::count_even:
+      return p.count[0];
+    case PartialField::count_odd:
+      return p.count[1];
+    case PartialField::albedo:
+      return p.albedo_sum[k];
+    case PartialField::normal:
+      return p.normal_sum[k];
+    case PartialField::depth:
+      return p.depth_sum;
+    case PartialField::hits:
+      return p.hit_count;
+    case PartialField::object_id:
+      return p.object_id;
+    case PartialField::material_id:
+      return p.material_id;
+    case PartialField::coverage:
+      return p.lines.coverage[size_t(k)];
+    case PartialField::weight:
+      return p.lines.weight;
+    case PartialField::override_weight:
+      return p.lines.override_weight;
+    case PartialField::override_color:
+      return p.lines.override_color[k];
+    case PartialField::rays:
+      return p.lines.rays;
+    case PartialField::hit_rays:
+      return p.lines.hit_rays;
+    case PartialField::line_count:
+      return p.line_count;
+  }
+  return 0.0;
+}
+
+void set_channel_value(FilmPixel& p, PartialField f, int k, double v) {
+  switch (f) {
+    case PartialField::preview:
+      break;
+    case PartialField::sum_even:
+      p.sum[0][k] = v;
+      break;
+    case PartialField::sum_odd:
+      p.sum[1][k] = v;
+      break;
+    case PartialField::count_even:
+      p.count[0] = uint32_t(v);
+      break;
+    case PartialField::count_odd:
+      p.count[1] = uint32_t(v);
+      break;
+    case PartialField::albedo:
+      p.albedo_sum[k] = v;
+      break;
+    case PartialField::normal:
+      p.normal_sum[k] = v;
+      break;
+    case PartialField::depth:
+      p.depth_sum = v;
+      break;
+    case PartialField::hits:
+      p.hit_count = uint32_t(v);
+      break;
+    case PartialField::object_id:
+      p.object_id = int(v);
+      break;
+    case PartialField::material_id:
+      p.material_id = int(v);
+      break;
+    case PartialField::coverage:
+      p.lines.coverage[size_t(k)] = v;
+      break;
+    case PartialField::weight:
+      p.lines.weight = v;
+      break;
+    case PartialField::override_weight:
+      p.lines.override_weight = v;
+      break;
+    case PartialField::override_color:
+      p.lines.override_color[k] = v;
+      break;
+    case PartialField::rays:
+      p.lines.rays = v;
+      break;
+    case PartialField::hit_rays:
+      p.lines.hit_rays = v;
+      break;
+    case PartialField::line_count:
+      p.line_count = uint32_t(v);
+      break;
+  }
+}
+
+std::vector<ExrChannel> exr_channels(const std::vector<PartialChannel>& channels) {
+  std::vector<ExrChannel> out;
+  for (size_t i = 0; i < channels.size(); ++i) {
+    const PartialChannel& c = channels[i];
+    switch (c.stored) {
+      case PartialStored::f64:
+        out.push_back({c.name + ".hi", i, 0, kExrUint, 0});
+        out.push_back({c.name + ".lo", i, 1, kExrUint, 0});
+        break;
+      case PartialStored::u32:
+      case PartialStored::i32:
+        out.push_back({c.name, i, 0, kExrUint, 0});
+        break;
+      case PartialStored::f32:
+        out.push_back({c.name, i, 0, kExrFloat, 0});
+        break;
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const ExrChannel& a, const ExrChannel& b) { return a.name < b.name; });
+  for (ExrChannel& hi : out)
+    if (channels[hi.channel].stored == PartialStored::f64 && hi.word == 0)
+      for (size_t k = 0; k < out.size(); ++k)
+        if (out[k].channel == hi.channel && out[k].word == 1) hi.low = k;
+  return out;
+}
+
+uint32_t to_word(double v, PartialStored stored, int word) {
+  switch (stored) {
+    case PartialStored::f64: {
+      uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      return word == 0 ? uint32_t(bits >> 32) : uint32_t(bits);
+    }
+    case PartialStored::u32:
+      return uint32_t(v);
+    case PartialStored::i32:
+      return uint32_t(int32_t(v));
+    case PartialStored::f32: {
+      const float f = float(v);
+      uint32_t bits;
+      std::memcpy(&bits, &f, sizeof bits);
+      return bits;
+    }
+  }
+  return 0;
+}
+
+double from_words(uint32_t hi, uint32_t lo, PartialStored stored) {
+  switch (stored) {
+    case PartialStored::f64: {
+      const uint64_t bits = (uint64_t(hi) << 32) | lo;
+      double v;
+      std::memcpy(&v, &bits, sizeof v);
+      return v;
+    }
+    case PartialStored::u32:
+      return double(hi);
+    case PartialStored::i32:
+      return double(int32_t(hi));
+    case PartialStored::f32: {
+      float f;
+      std::memcpy(&f, &hi, sizeof f);
+      return double(f);
+    }
+  }
+  return 0.0;
+}
+
+}  // namespace inkray

@@ -1,0 +1,333 @@
+// Partial files: the film's raw state round-trips to the bit, every file that is
+// not a whole partial is one clear error naming it (never a crash), and merging
+// refuses what would not add up to one render.
+#include "core/film/film_partial.h"
+#include "core/film/partial_merge.h"
+#include "core/image/image_io.h"
+#include "core/io/atomic_file.h"
+
+#include <gtest/gtest.h>
+#include <tinyexr.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace inkray {
+namespace {
+
+namespace fs = std::filesystem;
+
+class FilmPartial : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("inkray_film_partial_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+AovSet every_first_hit_aov() {
+  AovSet a;
+  for (const Aov aov : {Aov::albedo, Aov::normal, Aov::depth, Aov::object_id, Aov::material_id}) a.add(aov);
+  return a;
+}
+
+// A film with values no float round trip would keep (thirds, a tiny and a huge sum).
+std::unique_ptr<Film> odd_film(int w, int h) {
+  auto film = std::make_unique<Film>(w, h, every_first_hit_aov(), true);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (uint32_t pass = 0; pass < 3; ++pass) {
+        const float v = float(x + 1) / 3.f + float(y) * 1e-7f + float(pass);
+        film->add_sample(x, y, pass, Color(v, v * 1e-30f, v * 1e30f));
+        FirstHit hit;
+        hit.object = x == 0 ? -1 : x + int(pass);
+        hit.material = y;
+        hit.albedo = Color(v);
+        hit.normal = Vec3(0.f, 1.f, v);
+        hit.depth = v * 7.f;
+        film->add_first_hit(x, y, hit);
+        LineSample lines;
+        lines.coverage[2] = v / 7.f;
+        lines.weight = v;
+        lines.override_color = Color(0.1f, v, 0.3f);
+        lines.rays = 3.f;
+        lines.hit_rays = 1.f;
+        film->add_lines(x, y, lines);
+      }
+  return film;
+}
+
+PartialInfo info_of(int w, int h, PixelWindow window, uint32_t first, uint32_t end) {
+  PartialInfo info;
+  info.width = w;
+  info.height = h;
+  info.window = window;
+  info.first_pass = first;
+  info.end_pass = end;
+  info.frame = 2.5f;
+  info.seed = 7;
+  info.scene = R"({"format": "inkray-scene", "render": {"spp": 4, "max_depth": 8}})";
+  return info;
+}
+
+bool write_partial(const Film& film, const PartialInfo& info, const fs::path& file, std::string* error) {
+  std::string bytes;
+  return encode_partial(film, info, &bytes, error) && write_file_atomically(file, bytes, error);
+}
+
+std::string read_error(const fs::path& file) {
+  PartialInfo info;
+  std::unique_ptr<Film> film;
+  std::string error;
+  EXPECT_FALSE(read_partial(file, &info, &film, &error)) << file;
+  EXPECT_NE(error.find(file.string()), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  return error;
+}
+
+TEST_F(FilmPartial, RoundTripKeepsEveryBit) {
+  const auto film = odd_film(7, 5);
+  film->add_nonfinite(3);
+  PartialInfo info = info_of(7, 5, {1, 1, 6, 4}, 3, 6);
+  info.tiles_done = {1};
+  std::string error;
+  ASSERT_TRUE(write_partial(*film, info, dir_ / "p.exr", &error)) << error;
+
+  PartialInfo read;
+  std::unique_ptr<Film> back;
+  ASSERT_TRUE(read_partial(dir_ / "p.exr", &read, &back, &error)) << error;
+  EXPECT_EQ(read.width, 7);
+  EXPECT_EQ(read.height, 5);
+  EXPECT_EQ(read.window, (PixelWindow{1, 1, 6, 4}));
+  EXPECT_EQ(read.first_pass, 3u);
+  EXPECT_EQ(read.end_pass, 6u);
+  EXPECT_EQ(read.frame, 2.5f);
+  EXPECT_EQ(read.seed, 7);
+  EXPECT_EQ(read.scene, info.scene);
+  EXPECT_EQ(read.aovs.bits, every_first_hit_aov().bits);
+  EXPECT_TRUE(read.lines);
+  EXPECT_EQ(read.nonfinite, 3u);
+  EXPECT_EQ(read.tiles_done, std::vector<uint8_t>{1});
+  ASSERT_EQ(back->width(), 5);
+  ASSERT_EQ(back->height(), 3);
+  EXPECT_EQ(back->nonfinite_samples(), 3u);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 5; ++x) {
+      const FilmPixel a = film->pixel(x + 1, y + 1), b = back->pixel(x, y);
+      EXPECT_EQ(a.sum, b.sum);
+      EXPECT_EQ(a.count, b.count);
+      EXPECT_EQ(a.albedo_sum, b.albedo_sum);
+      EXPECT_EQ(a.normal_sum, b.normal_sum);
+      EXPECT_EQ(a.depth_sum, b.depth_sum);
+      EXPECT_EQ(a.hit_count, b.hit_count);
+      EXPECT_EQ(a.object_id, b.object_id);
+      EXPECT_EQ(a.material_id, b.material_id);
+      EXPECT_EQ(a.lines.coverage, b.lines.coverage);
+      EXPECT_EQ(a.lines.weight, b.lines.weight);
+      EXPECT_EQ(a.lines.override_color, b.lines.override_color);
+      EXPECT_EQ(a.lines.rays, b.lines.rays);
+      EXPECT_EQ(a.lines.hit_rays, b.lines.hit_rays);
+      EXPECT_EQ(a.line_count, b.line_count);
+    }
+  // A viewer sees the mean radiance in R, G, B.
+  RgbImage preview;
+  ASSERT_TRUE(read_exr(dir_ / "p.exr", &preview, &error)) << error;
+  EXPECT_EQ(preview.pixels[0], film->resolve().at(1, 1));
+}
+
+TEST_F(FilmPartial, AnythingElseIsOneErrorNamingTheFile) {
+  std::ofstream(dir_ / "garbage.exr") << "this is not an image at all, not even close";
+  EXPECT_NE(read_error(dir_ / "garbage.exr").find("not an OpenEXR file"), std::string::npos);
+  std::ofstream(dir_ / "empty.exr").close();
+  read_error(dir_ / "empty.exr");
+  read_error(dir_ / "missing.exr");
+
+  // An EXR image from elsewhere.
+  std::string error;
+  ASSERT_TRUE(write_image(dir_ / "image.exr", RgbImage{4, 4, std::vector<Color>(16, Color(0.5f))}, &error));
+  EXPECT_NE(read_error(dir_ / "image.exr").find("not an inkray partial"), std::string::npos);
+
+  // Cut anywhere: in the magic number, the header, the offsets, the pixels.
+  const auto film = odd_film(24, 20);
+  std::string bytes;
+  ASSERT_TRUE(encode_partial(*film, info_of(24, 20, {0, 0, 24, 20}, 0, 3), &bytes, &error)) << error;
+  for (const size_t keep : {size_t(3), size_t(40), bytes.size() / 4, bytes.size() / 2, bytes.size() - 9}) {
+    const fs::path cut = dir_ / ("cut_" + std::to_string(keep) + ".exr");
+    std::ofstream(cut, std::ios::binary) << bytes.substr(0, keep);
+    read_error(cut);
+  }
+}
+
+// An EXR with these attributes and float channels; attribute values as raw bytes.
+using Attributes = std::map<std::string, std::pair<std::string, std::string>>;
+
+std::string le32(std::initializer_list<int> values) {
+  std::string s;
+  for (const int v : values)
+    for (int b = 0; b < 4; ++b) s.push_back(char((uint32_t(v) >> (8 * b)) & 0xffu));
+  return s;
+}
+
+Attributes good_attributes() {
+  float frame = 1.f;
+  uint32_t bits;
+  std::memcpy(&bits, &frame, 4);
+  return {{"inkray.format", {"string", "inkray-partial"}},
+          {"inkray.version", {"int", le32({1})}},
+          {"inkray.imageSize", {"v2i", le32({2, 2})}},
+          {"inkray.window", {"box2i", le32({0, 0, 1, 1})}},
+          {"inkray.samples", {"v2i", le32({0, 4})}},
+          {"inkray.frame", {"float", le32({int(bits)})}},
+          {"inkray.seed", {"int", le32({0})}},
+          {"inkray.scene", {"string", "{}"}},
+          {"inkray.aovs", {"string", ""}},
+          {"inkray.lines", {"int", le32({0})}},
+          {"inkray.nonfinite", {"string", "0"}}};
+}
+
+void write_exr(const fs::path& file, const Attributes& attributes, const std::vector<std::string>& channels) {
+  std::vector<std::vector<float>> planes(channels.size(), std::vector<float>(4, 0.f));
+  std::vector<unsigned char*> data;
+  std::vector<EXRChannelInfo> infos(channels.size());
+  std::vector<int> types(channels.size(), TINYEXR_PIXELTYPE_FLOAT);
+  for (size_t c = 0; c < channels.size(); ++c) {
+    data.push_back(reinterpret_cast<unsigned char*>(planes[c].data()));
+    std::memset(&infos[c], 0, sizeof infos[c]);
+    std::strncpy(infos[c].name, channels[c].c_str(), 255);
+    infos[c].pixel_type = TINYEXR_PIXELTYPE_FLOAT;
+  }
+  EXRImage image;
+  InitEXRImage(&image);
+  image.images = data.data();
+  image.width = image.height = 2;
+  image.num_channels = int(channels.size());
+  std::vector<EXRAttribute> custom;
+  for (const auto& [name, a] : attributes) {
+    EXRAttribute e;
+    std::memset(&e, 0, sizeof e);
+    std::strncpy(e.name, name.c_str(), 255);
+    std::strncpy(e.type, a.first.c_str(), 255);
+    e.value = reinterpret_cast<unsigned char*>(const_cast<char*>(a.second.data()));
+    e.size = int(a.second.size());
+    custom.push_back(e);
+  }
+  EXRHeader header;
+  InitEXRHeader(&header);
+  header.num_channels = int(channels.size());
+  header.channels = infos.data();
+  header.pixel_types = types.data();
+  header.requested_pixel_types = types.data();
+  header.num_custom_attributes = int(custom.size());
+  header.custom_attributes = custom.data();
+  const char* err = nullptr;
+  ASSERT_EQ(SaveEXRImageToFile(&image, &header, file.c_str(), &err), TINYEXR_SUCCESS) << (err ? err : "");
+}
+
+TEST_F(FilmPartial, MistypedOrMissingPartsAreNamed) {
+  Attributes a = good_attributes();
+  a["inkray.seed"] = {"float", le32({0})};
+  write_exr(dir_ / "seed.exr", a, {"R"});
+  EXPECT_NE(read_error(dir_ / "seed.exr").find("attribute inkray.seed is of type float, expected int"),
+            std::string::npos);
+
+  a = good_attributes();
+  a.erase("inkray.samples");
+  write_exr(dir_ / "samples.exr", a, {"R"});
+  EXPECT_NE(read_error(dir_ / "samples.exr").find("missing attribute inkray.samples"), std::string::npos);
+
+  a = good_attributes();
+  a["inkray.version"] = {"int", le32({2})};
+  write_exr(dir_ / "future.exr", a, {"R"});
+  EXPECT_NE(read_error(dir_ / "future.exr").find("version 2"), std::string::npos);
+
+  a = good_attributes();
+  a["inkray.window"] = {"box2i", le32({0, 0, 4, 1})};
+  write_exr(dir_ / "window.exr", a, {"R"});
+  EXPECT_NE(read_error(dir_ / "window.exr").find("not inside the image"), std::string::npos);
+
+  write_exr(dir_ / "channels.exr", good_attributes(), {"B", "G", "R"});
+  EXPECT_NE(read_error(dir_ / "channels.exr").find("missing channel count.even"), std::string::npos);
+
+  // Every channel there, but as floats: the sums' words must be unsigned.
+  write_exr(dir_ / "types.exr", good_attributes(),
+            {"B", "G", "R", "count.even", "count.odd", "radiance.even.B.hi", "radiance.even.B.lo",
+             "radiance.even.G.hi", "radiance.even.G.lo", "radiance.even.R.hi", "radiance.even.R.lo",
+             "radiance.odd.B.hi", "radiance.odd.B.lo", "radiance.odd.G.hi", "radiance.odd.G.lo",
+             "radiance.odd.R.hi", "radiance.odd.R.lo"});
+  EXPECT_NE(read_error(dir_ / "types.exr").find("channel count.even is not 32-bit unsigned"),
+            std::string::npos);
+}
+
+TEST(PartialMismatch, NamesTheSettingThatDiffers) {
+  const PartialInfo a = info_of(8, 8, {0, 0, 8, 8}, 0, 4);
+  PartialInfo b = a;
+  EXPECT_EQ(partial_mismatch(a, b), "");
+  b.seed = 9;
+  EXPECT_EQ(partial_mismatch(a, b), "seed 7 vs 9");
+  b = a;
+  b.frame = 3.f;
+  EXPECT_EQ(partial_mismatch(a, b), "frame 2.5 vs 3");
+  b = a;
+  b.width = 16;
+  EXPECT_EQ(partial_mismatch(a, b), "image size 8x8 vs 16x8");
+  b = a;
+  b.aovs.add(Aov::depth);
+  EXPECT_EQ(partial_mismatch(a, b), "AOVs none vs depth");
+  // How many samples each render was asked for does not matter; what it renders does.
+  b = a;
+  b.scene = R"({"format": "inkray-scene", "render": {"spp": 64, "max_depth": 8}})";
+  EXPECT_EQ(partial_mismatch(a, b), "");
+  b.scene = R"({"format": "inkray-scene", "render": {"spp": 64, "max_depth": 16}})";
+  EXPECT_EQ(partial_mismatch(a, b), "the scene differs at render/max_depth: 8 vs 16");
+}
+
+TEST_F(FilmPartial, MergeRefusesOverlapsGapsAndHoles) {
+  const auto film = odd_film(8, 6);
+  const PixelWindow whole{0, 0, 8, 6};
+  std::string error;
+  const auto write = [&](const std::string& name, PixelWindow w, uint32_t first, uint32_t end) {
+    EXPECT_TRUE(write_partial(*film, info_of(8, 6, w, first, end), dir_ / name, &error)) << error;
+    return dir_ / name;
+  };
+  const fs::path a = write("a.exr", whole, 0, 4), b = write("b.exr", whole, 2, 6),
+                 c = write("c.exr", whole, 8, 12), left = write("left.exr", {0, 0, 4, 6}, 4, 8),
+                 late = write("late.exr", whole, 4, 8);
+  MergedFilm merged;
+  ASSERT_TRUE(merge_partials({a, late}, true, &merged, &error)) << error;
+  EXPECT_EQ(merged.min_samples, 8u);
+  EXPECT_EQ(merged.info.end_pass, 8u);
+
+  EXPECT_FALSE(merge_partials({a, b}, true, &merged, &error));
+  EXPECT_NE(error.find("both hold samples 2-4"), std::string::npos) << error;
+  EXPECT_NE(error.find("a.exr"), std::string::npos) << error;
+  EXPECT_NE(error.find("b.exr"), std::string::npos) << error;
+  EXPECT_FALSE(merge_partials({a, c}, true, &merged, &error));
+  EXPECT_NE(error.find("no partial holds samples 4-8"), std::string::npos) << error;
+  EXPECT_FALSE(merge_partials({a, left}, false, &merged, &error));
+  EXPECT_NE(error.find("one window and one range"), std::string::npos) << error;
+  EXPECT_FALSE(merge_partials({late}, true, &merged, &error));
+  EXPECT_NE(error.find("no partial holds samples 0-4"), std::string::npos) << error;
+  const fs::path top = write("top.exr", {0, 0, 8, 3}, 0, 4);
+  EXPECT_FALSE(merge_partials({top}, true, &merged, &error));
+  EXPECT_NE(error.find("24 pixels are in no partial"), std::string::npos) << error;
+  // A partial again: one window, one range.
+  ASSERT_TRUE(merge_partials({top}, false, &merged, &error)) << error;
+  EXPECT_EQ(merged.info.window, (PixelWindow{0, 0, 8, 3}));
+
+  PartialInfo other = info_of(8, 6, whole, 4, 8);
+  other.seed = 1;
+  ASSERT_TRUE(write_partial(*film, other, dir_ / "other.exr", &error)) << error;
+  EXPECT_FALSE(merge_partials({a, dir_ / "other.exr"}, true, &merged, &error));
+  EXPECT_NE(error.find("different renders: seed 7 vs 1"), std::string::npos) << error;
+  EXPECT_NE(error.find("other.exr"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace inkray
