@@ -70,15 +70,6 @@ Camera::View Camera::view_at(float time) const {
 
 Ray Camera::moving_ray(Vec2 film, Vec2 lens, float time) const { return ray_from(view_at(time), film, lens, time); }
 
-Camera Camera::at(float time) const {
-  if (!motion_) return *this;
-  Camera still = *this;
-  still.view_ = view_at(time);
-  still.motion_.reset();
-  still.frame_time_ = time;
-  return still;
-}
-
 bool Camera::project(const Point3& p, Vec2* film) const {
   const Vec3 d = p - view_.origin;
   const float z = glm::dot(d, view_.w);

@@ -40,9 +40,6 @@ class Camera {
   float image_height() const { return height_; }
   // Whether it moves while the shutter is open.
   bool moves() const { return motion_.has_value(); }
-  // The camera as it stands at `time`, still: the same rays at that instant, for
-  // many rays of one sample.
-  Camera at(float time) const;
 
   const Point3& origin() const { return view_.origin; }
   const Vec3& forward() const { return view_.w; }

@@ -14,7 +14,8 @@ namespace {
 // while turning a quarter turn about y. Interpolating the rotation (not the matrix)
 // gives the angle 90 t at time t.
 Transform expected_placement(float t) {
-  return Transform::translate(Vec3(glm::mix(-2.f, 2.f, t), 0.f, 0.f)) * Transform::rotate(90.f * t, Vec3(0.f, 1.f, 0.f));
+  return Transform::translate(Vec3(glm::mix(-2.f, 2.f, t), 0.f, 0.f)) *
+         Transform::rotate(90.f * t, Vec3(0.f, 1.f, 0.f));
 }
 
 std::shared_ptr<const ShapeBvh> unit_box() {
@@ -25,8 +26,8 @@ std::shared_ptr<const ShapeBvh> unit_box() {
 TEST(MovingInstance, PlacementInterpolatesTranslationAndRotation) {
   EmbreeScene scene;
   const auto box = unit_box();
-  const uint32_t id = scene.add_moving(box, expected_placement(0.f), expected_placement(1.f), nullptr,
-                                       box->shared_shape());
+  const uint32_t id =
+      scene.add_moving(box, expected_placement(0.f), expected_placement(1.f), nullptr, box->shared_shape());
   scene.commit();
   EXPECT_TRUE(scene.moving(id));
   EXPECT_TRUE(scene.any_moving());
@@ -34,7 +35,8 @@ TEST(MovingInstance, PlacementInterpolatesTranslationAndRotation) {
     const Transform at = scene.placement(id, t);
     const Transform want = expected_placement(t);
     for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 3; ++r) EXPECT_NEAR(at.m[c][r], want.m[c][r], 2e-5f) << "t " << t << " m[" << c << "][" << r << "]";
+      for (int r = 0; r < 3; ++r)
+        EXPECT_NEAR(at.m[c][r], want.m[c][r], 2e-5f) << "t " << t << " m[" << c << "][" << r << "]";
   }
   // The bounds hold the box over the whole shutter.
   Point3 lo, hi;
@@ -49,8 +51,8 @@ TEST(MovingInstance, PlacementInterpolatesTranslationAndRotation) {
 TEST(MovingInstance, HitsLieOnTheSurfaceWhereItStandsAtTheRaysInstant) {
   EmbreeScene scene;
   const auto box = unit_box();
-  const uint32_t id = scene.add_moving(box, expected_placement(0.f), expected_placement(1.f), nullptr,
-                                       box->shared_shape());
+  const uint32_t id =
+      scene.add_moving(box, expected_placement(0.f), expected_placement(1.f), nullptr, box->shared_shape());
   scene.commit();
   int hits = 0;
   for (const float t : {0.f, 0.3f, 0.5f, 0.7f, 1.f}) {
@@ -120,8 +122,10 @@ TEST(MovingInstance, ATurningShapeKeepsItsSize) {
 // centre is at the ray's instant, with the outward normal there.
 TEST(MovingInstance, MovingSphereIsHitWhereItIs) {
   EmbreeScene scene;
-  const auto sphere = std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(Sphere{Point3(0.f), 0.75f, {}}));
-  const Transform open = Transform::translate(Vec3(-1.f, 0.f, 0.f)), close = Transform::translate(Vec3(3.f, 0.f, 0.f));
+  const auto sphere =
+      std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(Sphere{Point3(0.f), 0.75f, {}}));
+  const Transform open = Transform::translate(Vec3(-1.f, 0.f, 0.f)),
+                  close = Transform::translate(Vec3(3.f, 0.f, 0.f));
   scene.add_moving(sphere, open, close, nullptr, sphere->shared_shape());
   scene.commit();
   for (const float t : {0.f, 0.25f, 0.5f, 1.f}) {
@@ -136,7 +140,8 @@ TEST(MovingInstance, MovingSphereIsHitWhereItIs) {
       EXPECT_NEAR(si.p.z, std::sqrt(0.75f * 0.75f - dx * dx - 0.04f), 1e-3f);
     }
     Hit hit;
-    EXPECT_FALSE(scene.intersect(Ray{Point3(centre.x + 0.8f, 0.f, 4.f), Vec3(0.f, 0.f, -1.f), t}, kInfinity, &hit));
+    EXPECT_FALSE(
+        scene.intersect(Ray{Point3(centre.x + 0.8f, 0.f, 4.f), Vec3(0.f, 0.f, -1.f), t}, kInfinity, &hit));
   }
 }
 
@@ -144,9 +149,9 @@ TEST(MovingInstance, MovingSphereIsHitWhereItIs) {
 TEST(MovingInstance, StillShapesIgnoreTheRaysInstant) {
   EmbreeScene scene;
   const auto box = unit_box();
-  scene.add(box, Transform::translate(Vec3(1.f, 0.f, 0.f)), std::make_shared<const Shape>(transformed(
-                                                                  std::get<TriangleMesh>(box->shape()),
-                                                                  Transform::translate(Vec3(1.f, 0.f, 0.f)))));
+  scene.add(box, Transform::translate(Vec3(1.f, 0.f, 0.f)),
+            std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(box->shape()),
+                                                      Transform::translate(Vec3(1.f, 0.f, 0.f)))));
   scene.commit();
   EXPECT_FALSE(scene.any_moving());
   Hit a, b;

@@ -141,9 +141,10 @@ SceneDesc busy_scene() {
   d.environment = GradientEnvironmentDesc{};
   d.outlines.enabled = true;
   d.materials = {{"red", DiffuseDesc{}, {}}, {"floor", DiffuseDesc{}, {}}};
-  d.objects = {make_object("ball", SphereDesc{Point3(0.f), 1.f}, "red"),
-               make_object("floor", QuadDesc{Point3(-5.f, -1.f, 5.f), Vec3(10.f, 0.f, 0.f), Vec3(0.f, 0.f, -10.f)},
-                           "floor")};
+  d.objects = {
+      make_object("ball", SphereDesc{Point3(0.f), 1.f}, "red"),
+      make_object("floor", QuadDesc{Point3(-5.f, -1.f, 5.f), Vec3(10.f, 0.f, 0.f), Vec3(0.f, 0.f, -10.f)},
+                  "floor")};
   LightDesc light;
   light.name = "lamp";
   light.data = PointLightDesc{Point3(2.f, 4.f, 3.f), Color(1.f), 20.f};
@@ -186,8 +187,9 @@ TEST(MotionBlur, OpenShutterOverStillnessIsBitIdentical) {
   quiet.render.shutter_open = 0.6f;  // frames 1.6 to 2: after the last key
   quiet.render.shutter_close = 1.f;
   SceneDesc lamp = busy_scene();
-  lamp.animation = {TrackDesc{"lights/lamp/intensity",
-                              {KeyDesc{0.5, {10.0}, Interpolation::linear}, KeyDesc{1.5, {30.0}, Interpolation::linear}}}};
+  lamp.animation = {
+      TrackDesc{"lights/lamp/intensity",
+                {KeyDesc{0.5, {10.0}, Interpolation::linear}, KeyDesc{1.5, {30.0}, Interpolation::linear}}}};
   lamp.render.shutter_open = -0.5f;
   lamp.render.shutter_close = 0.5f;
   for (const SceneDesc& desc : {quiet, lamp}) {

@@ -5,7 +5,6 @@
 #include "core/sampling/warp.h"
 
 #include <cmath>
-#include <optional>
 
 namespace inkray {
 namespace {
@@ -183,11 +182,6 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
   const float occlusion_jump = std::max(kMinOcclusionJump, 2.f * stencil_angle);
 
   const Sampler pixel(draw.x, draw.y, draw.first, draw.seed);
-  // A camera that moves during the shutter stands still for one sample: its view at
-  // the sample's instant is worked out once for all the stencil rays.
-  std::optional<Camera> instant;
-  if (camera.moves()) instant = camera.at(centre_ray.time);
-  const Camera& stencil_camera = instant ? *instant : camera;
   for (int k = 0; k < draw.count; ++k) {
     const Vec2 u = pixel.get_pair_at(draw.first + uint32_t(k), kOutlinePairBlock);
     const Vec2 offset = stencil.radius * sample_uniform_disk_concentric(u);
@@ -198,7 +192,7 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
     if (!wanted) continue;
     // At the sample's instant: the stencil sees what its centre sees, so the lines
     // of a moving object blur with it instead of breaking.
-    const Ray ray = stencil_camera.generate_ray(film_pos + offset, lens, centre_ray.time);
+    const Ray ray = camera.generate_ray(film_pos + offset, lens, centre_ray.time);
     const PerceivedSurface s = find_perceived_surface(scene, ray, u_mix, setup.max_blur, rays);
     if (s.lost || (s.hit && scene.objects[s.object].lines.exclude)) continue;
     const uint32_t found = breaks(centre, s, setup, occlusion_jump) & wanted;
