@@ -161,7 +161,11 @@ int run(const MergeOptions& opt) {
     SceneLoadResult scene = parse_scene(info.scene, opt.partials.front().parent_path(),
                                         opt.partials.front().string() + ": inkray.scene", ReadFor::editing);
     if (!scene) {
-      for (const auto& e : scene.errors) std::fprintf(stderr, "error: %s\n", e.c_str());
+      // One line: the first problem (a partial's scene was written by inkray, so any is damage).
+      const std::string first = scene.errors.empty() ? "unreadable" : scene.errors.front();
+      std::fprintf(stderr, "error: %s%s\n", first.c_str(),
+                   scene.errors.size() > 1 ? (" (and " + std::to_string(scene.errors.size() - 1) + " more)").c_str()
+                                           : "");
       return 1;
     }
     SceneDesc desc = std::move(*scene.scene);

@@ -36,6 +36,8 @@ float canvas_text_width(float zoom, std::string_view text) {
 bool color_bar(const Param& p, Color& c, float width) {
   ImGui::PushID(p.name.data(), p.name.data() + p.name.size());
   const ImVec4 shown(std::min(c.x, 1.f), std::min(c.y, 1.f), std::min(c.z, 1.f), 1.f);
+  // One item, bar and label, for what follows (key marks, a key's menu).
+  ImGui::BeginGroup();
   if (ImGui::ColorButton("##bar", shown, ImGuiColorEditFlags_NoTooltip,
                          ImVec2(width, ImGui::GetFrameHeight())))
     ImGui::OpenPopup("picker");
@@ -43,6 +45,7 @@ bool color_bar(const Param& p, Color& c, float width) {
   ImGui::SameLine(0.f, ImGui::GetStyle().ItemInnerSpacing.x);
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted(param_label(p).c_str());
+  ImGui::EndGroup();
   bool changed = false;
   if (ImGui::BeginPopup("picker")) {
     ImGui::SetWindowFontScale(1.f);  // the picker is a window of its own, at the normal size
@@ -95,12 +98,14 @@ struct RowWidgets {
     if constexpr (std::is_same_v<F, Vec3>) {
       if (p.kind == ParamKind::color) {
         if (color_bar(p, field, width)) bar_changed = true, bar_param = p.name;
+        generated.key_marks(p);
       } else {
         generated(p, field);
       }
     } else if constexpr (std::is_same_v<F, ColorInput>) {
       if (Color* constant = std::get_if<Color>(&field)) {
         if (color_bar(p, *constant, width)) bar_changed = true, bar_param = p.name;
+        generated.key_marks(p);
       } else {
         generated(p, field);  // a texture object kept from a plain material: its own widgets
       }
@@ -146,7 +151,7 @@ void draw_link(ImDrawList* draw, const CanvasView& view, const Bezier& curve, Im
 
 NodeDrawResult draw_node(ImDrawList* draw, const CanvasView& view, const GraphNodeDesc& node,
                          const NodeBox& box, const std::vector<std::string_view>& linked_inputs,
-                         bool selected, bool widgets, const SceneDesc& scene) {
+                         bool selected, bool widgets, const NodeWidgetContext& context) {
   const NodeMetrics m;
   const float z = view.zoom;
   const ImVec2 a = im(to_screen(view, box.rect.min)), b = im(to_screen(view, box.rect.max));
@@ -190,7 +195,10 @@ NodeDrawResult draw_node(ImDrawList* draw, const CanvasView& view, const GraphNo
       [&](auto& settings) {
         RowWidgets rw{box, linked_inputs,      view, draw, clip, first_param, widgets, m, {}, false,
                       {},  &result.row_heights};
-        rw.generated.scene = &scene;  // an image node's browse button starts in the scene's folder
+        rw.generated.scene = context.scene;  // an image node's browse button starts in the scene's folder
+        rw.generated.keys = context.keys;
+        rw.generated.key_item = context.material;
+        rw.generated.key_group = "nodes." + node.id;
         visit_params(settings, rw);
         result.changed = rw.generated.changed || rw.bar_changed;
         result.changed_param = rw.bar_changed ? rw.bar_param : rw.generated.changed_param;

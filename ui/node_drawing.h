@@ -5,6 +5,8 @@
 #pragma once
 
 #include "ui/node_canvas.h"
+#include "ui/param_widgets.h"
+#include "ui/selection.h"
 
 #include <imgui.h>
 
@@ -27,11 +29,19 @@ struct NodeDrawResult {
   std::vector<float> row_heights;  // as drawn, canvas units, per row of node_rows
 };
 
+// What a node's widgets read beyond the node: the scene, whose folder path fields
+// browse from, and for keyable fields the panel's keys and the material the graph is
+// of (its parameters are keyed as materials/NAME/nodes/ID/PARAM).
+struct NodeWidgetContext {
+  const SceneDesc* scene = nullptr;
+  KeyTargets* keys = nullptr;
+  Selection material;
+};
+
 // Draws one node as laid out in `box`. Widgets are drawn only when `widgets` (they
 // are unreadable when zoomed far out); rows of linked inputs show their name alone.
-// `scene` gives path fields its folder.
 NodeDrawResult draw_node(ImDrawList* draw, const CanvasView& view, const GraphNodeDesc& node,
                          const NodeBox& box, const std::vector<std::string_view>& linked_inputs,
-                         bool selected, bool widgets, const SceneDesc& scene);
+                         bool selected, bool widgets, const NodeWidgetContext& context);
 
 }  // namespace inkray

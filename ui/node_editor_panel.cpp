@@ -4,6 +4,7 @@
 
 #include "core/compiler/graph_checks.h"
 #include "core/document/graph_edit.h"
+#include "ui/key_actions.h"
 #include "ui/material_swatches.h"
 #include "ui/node_add_menu.h"
 #include "ui/node_drawing.h"
@@ -92,7 +93,9 @@ void NodeEditorPanel::draw(EditorState& state, bool* open) {
     ImGui::TextDisabled("Select a material, or an object, to see its nodes.");
     return;
   }
-  const MaterialDesc& material = scene.materials[size_t(m)];
+  // The graph's values at the current frame, as every panel shows them; an edit of an
+  // animated one keys it (ui/document.cpp), and others keep their tracks.
+  const MaterialDesc& material = state.shown().materials[size_t(m)];
   const std::optional<CanvasView> stored = stored_view(material);
   if (material.name != material_name_) {
     // Another material: its own view, nothing selected or dragged.
@@ -289,13 +292,17 @@ void NodeEditorPanel::draw_canvas(EditorState& state) {
   ImGui::PushStyleVar(ImGuiStyleVar_IndentSpacing, 12.f * z);
   std::optional<NodeDrawResult> edited;
   std::string edited_id;
+  KeyTargets keys;
+  keys.document = &state.document.scene();
+  keys.report = state.report_params;
+  const NodeWidgetContext context{&state.document.scene(), &keys, Selection{ItemKind::material, material_}};
   for (size_t i = 0; i < boxes.size(); ++i) {
     const GraphNodeDesc& node = *order[i];
     std::vector<std::string_view> linked;
     for (const GraphLinkDesc& l : graph_.links)
       if (l.to == node.id) linked.push_back(l.input);
     const bool selected = std::find(selected_.begin(), selected_.end(), node.id) != selected_.end();
-    NodeDrawResult r = draw_node(draw, view_, node, boxes[i], linked, selected, z >= 0.5f, state.document.scene());
+    NodeDrawResult r = draw_node(draw, view_, node, boxes[i], linked, selected, z >= 0.5f, context);
     if (z >= 0.5f) row_heights_[node.id] = r.row_heights;
     if (r.changed) edited = std::move(r), edited_id = node.id;
   }
@@ -315,6 +322,7 @@ void NodeEditorPanel::draw_canvas(EditorState& state) {
   draw_drag_feedback(boxes);
   handle_mouse(state, boxes);
   handle_keys(state);
+  apply_key_actions(state, keys);
   add_menu(state);
   layout_ = layout_text(boxes, graph_, view_, canvas_size_);
   focused_ = ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows);

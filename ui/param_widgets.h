@@ -101,6 +101,11 @@ struct ParamWidgets {
     }
   }
 
+  // The key mark beside a keyable field, its menu, and I / Alt+I while it is hovered:
+  // called by every widget here, and after a field drawn by other code (the node
+  // editor's colour bars), with that field as ImGui's last item.
+  void key_marks(const Param& p);
+
  private:
   bool choice_widget(const Param& p, int* index);
   bool reference_widget(const Param& p, std::string* value);
@@ -112,8 +117,6 @@ struct ParamWidgets {
   bool add_button();
   // The tooltip and, when it names this parameter, the problem in red.
   void finish(const Param& p, bool typed_value);
-  // The key mark beside a keyable field, its menu, and I / Alt+I while it is hovered.
-  void key_marks(const Param& p);
   void note(const Param& p) {
     changed = true;
     changed_param = path_ + std::string(p.name);

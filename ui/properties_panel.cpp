@@ -1,16 +1,15 @@
 #include "ui/properties_panel.h"
 
-#include "core/document/animation_edit.h"
 #include "core/document/graph_edit.h"
 #include "core/document/edit_checks.h"
 #include "core/document/param_text.h"
+#include "ui/key_actions.h"
 #include "ui/param_widgets.h"
 #include "ui/scene_edits.h"
 
 #include <imgui.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -335,44 +334,6 @@ void singleton_section(Panel& panel, ItemKind kind, T SceneDesc::*member) {
   }
 }
 
-// I keys the field under the mouse (or, over the panel, the focused one) at the current
-// frame, Alt+I deletes its key there; the fields' menus ask the same.
-void apply_keys(Panel& panel) {
-  EditorState& state = panel.state;
-  KeyTargets& keys = panel.keys;
-  const ImGuiIO& io = ImGui::GetIO();
-  using Action = KeyTargets::Action;
-  std::string target = keys.hovered;
-  if (target.empty() && ImGui::IsWindowHovered(ImGuiHoveredFlags_RootAndChildWindows)) target = keys.focused;
-  const bool plain_i = !io.WantTextInput && !io.KeyCtrl && !io.KeyShift && ImGui::IsKeyPressed('I', false);
-  if (!target.empty() && plain_i) {
-    keys.action = io.KeyAlt ? Action::remove : Action::insert;
-    keys.action_path = target;
-  }
-  if (keys.action == Action::none) return;
-  SceneDesc scene = state.document.scene();
-  const double frame = scene.render.frame;
-  const std::string& path = keys.action_path;
-  char at[64];
-  std::snprintf(at, sizeof at, " at frame %g", frame);
-  switch (keys.action) {
-    case Action::insert:
-      if (key_shown_value(scene, path, frame)) state.edit(std::move(scene), "Insert key");
-      break;
-    case Action::remove:
-      if (unkey(scene, path, frame)) {
-        state.edit(std::move(scene), "Delete key");
-      } else {
-        state.log.info(path + " has no key" + at);
-      }
-      break;
-    case Action::clear:
-      if (clear_keys(scene, path)) state.edit(std::move(scene), "Clear keys");
-      break;
-    case Action::none: break;
-  }
-}
-
 }  // namespace
 
 void draw_properties_panel(EditorState& state) {
@@ -434,7 +395,7 @@ void draw_properties_panel(EditorState& state) {
       break;
   }
   ImGui::PopItemWidth();
-  apply_keys(panel);
+  apply_key_actions(state, panel.keys);
 }
 
 }  // namespace inkray

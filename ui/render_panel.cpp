@@ -2,6 +2,7 @@
 
 #include "core/document/param_text.h"
 #include "ui/export_queue.h"
+#include "ui/key_actions.h"
 #include "ui/param_widgets.h"
 #include "ui/widget_report.h"
 
@@ -36,16 +37,25 @@ void push_item_width(float label_width) {
                                   ImGui::GetFontSize() * 5.f, ImGui::GetFontSize() * 14.f));
 }
 
+// The settings at the current frame, keyable like the properties panel's; editing an
+// animated one keys it (ui/document.cpp).
 void document_settings(EditorState& state, float label_width) {
-  RenderSettings settings = state.document.scene().render;
+  RenderSettings settings = state.shown().render;
+  KeyTargets keys;
+  keys.document = &state.document.scene();
+  keys.report = state.report_params;
+  ParamWidgets widgets;
+  widgets.keys = &keys;
+  widgets.key_item = Selection{ItemKind::render, -1};
   std::string param;
   push_item_width(label_width);
-  if (edit_params(settings, &param)) {
+  if (edit_params(settings, &param, widgets)) {
     SceneDesc scene = state.document.scene();
     scene.render = settings;
     state.edit(std::move(scene), "Edit " + param, "render:" + param);
   }
   ImGui::PopItemWidth();
+  apply_key_actions(state, keys);
 }
 
 constexpr const char* kViewportLabels[] = {"Samples per pixel", "Time limit", "Noise target"};

@@ -76,13 +76,12 @@ std::map<std::string, Attribute> partial_attributes(const PartialInfo& info) {
 
 // ------------------------------------------------------------ tinyexr RAII
 
+// tinyexr 1.0.1 fills the header with what it read even when parsing fails, so it is
+// always freed.
 struct ParsedHeader {
   EXRHeader header;
-  bool parsed = false;
   ParsedHeader() { InitEXRHeader(&header); }
-  ~ParsedHeader() {
-    if (parsed) FreeEXRHeader(&header);
-  }
+  ~ParsedHeader() { FreeEXRHeader(&header); }
   ParsedHeader(const ParsedHeader&) = delete;
   ParsedHeader& operator=(const ParsedHeader&) = delete;
 };
@@ -122,6 +121,13 @@ bool read_bytes(const std::filesystem::path& file, std::string* bytes, std::stri
   return true;
 }
 
+// An attribute's name or type as read, for a message: one line of plain characters.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text.substr(0, 64)) out += (c >= 32 && c < 127) ? c : '?';
+  return out;
+}
+
 // Reads the attributes of a parsed header into `info`; false with *error (no file name).
 bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error) {
   std::map<std::string, Attribute> found;
@@ -145,7 +151,8 @@ bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error)
       return false;
     }
     if (it->second.type != type) {
-      *error = std::string("attribute ") + name + " is of type " + it->second.type + ", expected " + type;
+      *error = std::string("attribute ") + name + " is of type " + printable(it->second.type) + ", expected " +
+               type;
       return false;
     }
     if (size && it->second.value.size() != size) {
@@ -186,7 +193,7 @@ bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error)
   for (std::string name; std::getline(names, name, ',');) {
     const auto aov = aov_from_name(name);
     if (!aov || is_outline_aov(*aov)) {
-      *error = "attribute inkray.aovs names \"" + name +
+      *error = "attribute inkray.aovs names \"" + printable(name) +
                "\", expected first-hit AOVs (albedo, normal, depth, "
                "object_id, material_id)";
       return false;
@@ -368,7 +375,6 @@ bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::uni
     *error = label + "broken EXR header (" + take_error(err, "unreadable") + ")";
     return false;
   }
-  parsed.parsed = true;
   const EXRHeader& h = parsed.header;
   std::string problem;
   if (!parse_attributes(h, info, &problem)) {
@@ -404,6 +410,9 @@ bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::uni
   // Every channel is read as the type it is stored in (tinyexr converts only half).
   for (int k = 0; k < h.num_channels; ++k) parsed.header.requested_pixel_types[k] = h.pixel_types[k];
   LoadedImage loaded;
+  // tinyexr 1.0.1 frees the planes of pixels it failed to decode by this count, which it
+  // sets only on success: set here, a damaged file leaks nothing.
+  loaded.image.num_channels = h.num_channels;
   if (LoadEXRImageFromMemory(&loaded.image, &parsed.header, data, bytes.size(), &err) != TINYEXR_SUCCESS) {
     *error = label + "cannot read the pixels (" + take_error(err, "truncated or damaged") + ")";
     return false;

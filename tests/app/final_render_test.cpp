@@ -3,18 +3,17 @@
 // the very image one run renders; every bad input a one-line error.
 #include "core/film/film_partial.h"
 #include "core/image/image_io.h"
+#include "tests/support/file_helpers.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
-#include <sys/wait.h>
 
 namespace inkray {
 namespace {
@@ -27,14 +26,8 @@ struct RunResult {
 };
 
 RunResult run(const std::string& program, const std::string& args) {
-  const std::string cmd = std::string(INKRAY_BINARY_DIR) + "/bin/" + program + " " + args + " 2>&1";
   RunResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.output = testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/" + program + " " + args, &r.exit_code);
   return r;
 }
 

@@ -1,10 +1,10 @@
 // inkray-render end to end: exit codes, one-line errors, written images.
 #include "core/image/image_io.h"
+#include "tests/support/file_helpers.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -27,14 +27,8 @@ struct RunResult {
 };
 
 RunResult run_render(const std::string& args) {
-  const std::string cmd = std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render " + args + " 2>&1";
   RunResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.output = testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render " + args, &r.exit_code);
   return r;
 }
 

@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -228,20 +227,6 @@ TEST(PainterlyFilter, TinyRadiusAndTinyImages) {
     for (const PainterlyFilterParams& p : {PainterlyFilterParams{}, tiny, odd})
       EXPECT_EQ(f.filter(single, p, nullptr).pixels, single.pixels) << f.name;
     EXPECT_TRUE(f.filter(empty, {}, nullptr).pixels.empty());
-  }
-}
-
-// Prints only: timings depend on the machine.
-TEST(PainterlyFilter, TimingOnOneCore) {
-  const RgbImage image = structured_test_image(960, 540, 2);
-  ThreadBudget one(1);
-  for (const NamedFilter& f : kFilters) {
-    const auto start = std::chrono::steady_clock::now();
-    const RgbImage out = f.filter(image, {}, &one);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::printf("[ info ] %s 960x540 radius 4, one thread: %.0f ms\n", f.name, ms);
-    EXPECT_EQ(out.pixels.size(), image.pixels.size());
   }
 }
 

@@ -89,6 +89,23 @@ TEST(SliceRender, SlicesAddUpToTheFilmOfOneRender) {
   }
 }
 
+// A larger image: lines cross tile edges in many places, so what a slice replays
+// near a tile reads its neighbours' probes (line_sampling.h, line_reach).
+TEST(SliceRender, SlicesOfALargerImageAddUpToTheFilmOfOneRender) {
+  const CompileResult c = compile_scene(outlined_box(96, 96));
+  ASSERT_TRUE(c.scene);
+  RenderSession one(2);
+  one.set_scene(c.scene, some_aovs());
+  for (int p = 0; p < 24; ++p) ASSERT_TRUE(one.render_pass());
+  Film merged(96, 96, some_aovs(), true);
+  render_slice(c.scene, 0, 5, {}, merged);
+  render_slice(c.scene, 5, 13, {}, merged);
+  render_slice(c.scene, 13, 24, {}, merged);
+  EXPECT_EQ(film_difference(one.film(), merged, {0, 0, 96, 96}), "");
+  EXPECT_EQ(one.film().resolve().pixels, merged.resolve().pixels);
+  EXPECT_EQ(one.film().resolve_aov(Aov::outline).pixels, merged.resolve_aov(Aov::outline).pixels);
+}
+
 TEST(SliceRender, CropWindowsAddUpToTheFilmOfOneRender) {
   const CompileResult c = compile_scene(outlined_box(40, 30));
   ASSERT_TRUE(c.scene);

@@ -10,35 +10,16 @@
 
 #include <gtest/gtest.h>
 
-#include <cctype>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace inkray {
 namespace {
 
-using testing::editor_command;
 using testing::editor_unavailable;
-using testing::run_command;
+using testing::printed_numbers;
+using testing::run_editor_script;
 using testing::ScratchFolder;
-
-// The numbers after the n-th line starting with `head` in the editor's output.
-std::vector<double> printed(const std::string& out, const std::string& head, int n = 0) {
-  std::istringstream lines(out);
-  for (std::string line; std::getline(lines, line);) {
-    if (line.rfind(head + " ", 0) != 0 || n-- > 0) continue;
-    std::istringstream words(line.substr(head.size()));
-    std::vector<double> numbers;
-    std::string word;
-    while (words >> word) {
-      if (std::isdigit(static_cast<unsigned char>(word.back()))) numbers.push_back(std::stod(word));
-    }
-    return numbers;
-  }
-  return {};
-}
 
 constexpr const char* kScript = R"(# The ball is selected; its position is the first field of its transform.
 wait 3
@@ -83,53 +64,46 @@ print-frame
 TEST(TimelineEditor, KeysScrubsPlaysAndUndoesFromTheKeyboardAndMouse) {
   if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
   ScratchFolder dir;
-  const auto script = dir / "input.txt";
-  std::ofstream(script) << kScript;
-  const std::string scene = std::string(INKRAY_SOURCE_DIR) + "/tests/ui/data/timeline.json";
-  const auto dump = dir / "dump.json";
   int code = 0;
-  const std::string out =
-      run_command(editor_command(dir.path(), 1280, 720) + " --input-script " + script.string() +
-                      " --threads 1 --select ball --frames 110 --screenshot " +
-                      (dir / "timeline.png").string() + " --scene-dump " + dump.string() + " " + scene,
-                  &code);
+  const std::string out = run_editor_script(dir, 1280, 720, kScript, "--threads 1 --select ball --frames 110",
+                                            "timeline.json", &code);
   ASSERT_EQ(code, 0) << out;
   ASSERT_NE(out.find("input script: done"), std::string::npos) << out;
 
   // Shift+Right went to the shot's last frame; the drag there moved the ball along x.
-  EXPECT_EQ(printed(out, "frame", 0), std::vector<double>{24}) << out;
-  const std::vector<double> at_end = printed(out, "value", 0), at_start = printed(out, "value", 1);
+  EXPECT_EQ(printed_numbers(out, "frame", 0), std::vector<double>{24}) << out;
+  const std::vector<double> at_end = printed_numbers(out, "value", 0), at_start = printed_numbers(out, "value", 1);
   ASSERT_EQ(at_end.size(), 3u) << out;
   ASSERT_EQ(at_start.size(), 3u) << out;
   EXPECT_EQ(at_start[0], -1.0);
   EXPECT_GT(at_end[0], at_start[0] + 0.05) << out;
-  EXPECT_EQ(printed(out, "keys", 0), (std::vector<double>{1, 24})) << out;
+  EXPECT_EQ(printed_numbers(out, "keys", 0), (std::vector<double>{1, 24})) << out;
 
   // I, Alt+I and the menu's "Insert key" on the material's colour.
-  EXPECT_EQ(printed(out, "keys", 1), std::vector<double>{24}) << out;
-  EXPECT_TRUE(printed(out, "keys", 2).empty()) << out;
-  EXPECT_EQ(printed(out, "keys", 3), std::vector<double>{24}) << out;
+  EXPECT_EQ(printed_numbers(out, "keys", 1), std::vector<double>{24}) << out;
+  EXPECT_TRUE(printed_numbers(out, "keys", 2).empty()) << out;
+  EXPECT_EQ(printed_numbers(out, "keys", 3), std::vector<double>{24}) << out;
 
   // Scrubbing to the bar's middle shows a frame between the keys, and a value between theirs.
-  const std::vector<double> scrubbed = printed(out, "frame", 1);
+  const std::vector<double> scrubbed = printed_numbers(out, "frame", 1);
   ASSERT_EQ(scrubbed.size(), 1u) << out;
   EXPECT_GT(scrubbed[0], 1.0);
   EXPECT_LT(scrubbed[0], 24.0);
-  const std::vector<double> between = printed(out, "value", 2);
+  const std::vector<double> between = printed_numbers(out, "value", 2);
   ASSERT_EQ(between.size(), 3u) << out;
   EXPECT_GT(between[0], at_start[0]);
   EXPECT_LT(between[0], at_end[0]);
 
   // Half a second of playback at 24 fps moved the frame; undo took the menu's key back
   // and left the frame where playback stopped.
-  const std::vector<double> played = printed(out, "frame", 2);
+  const std::vector<double> played = printed_numbers(out, "frame", 2);
   ASSERT_EQ(played.size(), 1u) << out;
   EXPECT_NE(played[0], scrubbed[0]) << out;
-  EXPECT_TRUE(printed(out, "keys", 4).empty()) << out;
-  EXPECT_EQ(printed(out, "frame", 3), played) << out;
+  EXPECT_TRUE(printed_numbers(out, "keys", 4).empty()) << out;
+  EXPECT_EQ(printed_numbers(out, "frame", 3), played) << out;
 
   // The document as it was left: two keys on the ball's position, the frame played to.
-  const SceneLoadResult saved = load_scene(dump);
+  const SceneLoadResult saved = load_scene(dir / "dump.json");
   ASSERT_TRUE(saved) << (saved.errors.empty() ? "" : saved.errors.front());
   const TrackDesc* track = find_track(*saved.scene, "objects/ball/transform/translate");
   ASSERT_NE(track, nullptr);
