@@ -4,9 +4,11 @@
 #include "core/document/graph_reference.h"
 #include "core/document/json_io.h"
 #include "core/film/film_partial.h"
+#include "core/film/line_decisions_file.h"
 #include "core/film/partial_merge.h"
 #include "core/film/resolve.h"
 #include "core/render/batch_render.h"
+#include "core/io/atomic_file.h"
 #include "core/render/render_outputs.h"
 
 #include <algorithm>
@@ -113,6 +115,57 @@ PartialInfo film_info(const RenderSession& session, const SceneDesc& desc, const
   return info;
 }
 
+// --decide-lines: the decisions of the scene's frame, traced over the whole image,
+// written atomically.
+int write_line_decisions(const RenderCliOptions& opt, const SceneDesc& desc, Cancel::Clock::time_point start) {
+  const double time_limit = opt.time_seconds.value_or(desc.render.time_limit);
+  CompileOptions options;
+  options.cancel = Cancel(nullptr, deadline_after(start, time_limit));
+  options.memory_limit = opt.memory_limit.value_or(0);
+  SceneCompiler compiler;
+  const CompileResult compiled = compiler.compile(desc, options);
+  if (compiled.cancelled) {
+    std::fprintf(stderr, "error: %s: the time limit of %g s ran out while building the scene; nothing was written\n",
+                 opt.scene.c_str(), time_limit);
+    return 1;
+  }
+  if (!compiled.scene) {
+    for (const auto& e : compiled.errors) std::fprintf(stderr, "error: %s: %s\n", opt.scene.c_str(), e.c_str());
+    return 1;
+  }
+  RenderSession session(opt.threads.value_or(0));
+  session.set_scene(compiled.scene);
+  const LineDecisions decisions = session.decide_lines();
+  PartialInfo info = film_info(session, desc, PixelWindow{0, 0, desc.render.width, desc.render.height});
+  std::string error;
+  if (!write_file_atomically(opt.decide_lines, encode_line_decisions(decisions, info), &error)) {
+    std::fprintf(stderr, "error: %s\n", error.c_str());
+    return 1;
+  }
+  if (!opt.quiet)
+    std::printf("%s: line decisions of %dx%d pixels, made by sample %u, written to %s\n", opt.scene.c_str(),
+                decisions.width, decisions.height, decisions.decided_at, opt.decide_lines.c_str());
+  return 0;
+}
+
+// --line-decisions: the file's decisions, when they are of this render (else an error line).
+bool read_matching_decisions(const RenderCliOptions& opt, const PartialInfo& expected, LineDecisions* decisions) {
+  PartialInfo info;
+  std::string error;
+  if (!read_line_decisions(opt.line_decisions, &info, decisions, &error)) {
+    std::fprintf(stderr, "error: %s\n", error.c_str());
+    return false;
+  }
+  PartialInfo render = expected;
+  render.aovs = {};  // the decisions hold no AOVs: any the slice keeps are its own
+  if (const std::string problem = partial_mismatch(info, render); !problem.empty()) {
+    std::fprintf(stderr, "error: %s: line decisions of another render: %s\n", opt.line_decisions.c_str(),
+                 problem.c_str());
+    return false;
+  }
+  return true;
+}
+
 // Renders one frame (or the still) and writes its files. `start` is when this frame's
 // time began (for the first, before the scene was read).
 int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::Clock::time_point start) {
@@ -183,11 +236,17 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
                    files.checkpoint.c_str(), problem.c_str());
       return 1;
     }
+  }
+  LineDecisions decisions;
+  if (!opt.line_decisions.empty() && !read_matching_decisions(opt, film_info(session, desc, window), &decisions))
+    return 1;
+  const LineDecisions* decided = opt.line_decisions.empty() ? nullptr : &decisions;
+  if (resumed_film) {
     session.load_film(*resumed_film);
     resumed_film.reset();
-    session.continue_from(first, resumed.end_pass, resumed.tiles_done);
+    session.continue_from(first, resumed.end_pass, resumed.tiles_done, decided);
   } else {
-    session.continue_from(first, first);
+    session.continue_from(first, first, {}, decided);
   }
 
   // The render gets what reading and building left of the time, less what the painterly
@@ -321,6 +380,7 @@ int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
                  desc.render.height);
     return 2;
   }
+  if (!opt.decide_lines.empty()) return write_line_decisions(opt, desc, start);
   std::vector<std::optional<int>> frames;
   if (!opt.frames) {
     frames.push_back(std::nullopt);  // the still: the scene's current frame

@@ -14,7 +14,8 @@ namespace inkray {
 const char* const kRenderCliHelp = R"(inkray-render: render an inkray scene without a window.
 
 usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
-       inkray-render SCENE.json --samples A B -o PART.exr [options]
+       inkray-render SCENE.json --samples A B -o PART.exr [--line-decisions FILE] [options]
+       inkray-render SCENE.json --decide-lines FILE [options]
        inkray-render SCENE.json --write-scene OUT.json
 
 
@@ -59,6 +60,12 @@ Final renders on many machines (docs/final-renders.md):
   --resume              continue from OUT.checkpoint.exr when there is one (refused when it is of
                         another scene, setting, frame or size); with none, skip the render when
                         its image and AOV files all exist
+  --decide-lines FILE   trace only what adaptive line sampling decides in a render's first passes
+                        (the whole image, at --width, --height and --seed) and write it to FILE;
+                        renders nothing. Made once for a render split into sample slices
+  --line-decisions FILE with --samples A B: read those decisions instead of tracing them again
+                        (slices that start before they were all made trace them as usual);
+                        refused when FILE is of another scene, setting, frame or size
 
 The same scene, seed and sample count give the same image at any thread count, on one machine
 or merged from slices and crops of it.
@@ -283,6 +290,10 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       o.checkpoint_minutes = m;
     } else if (arg == "--resume") {
       o.resume = true;
+    } else if (arg == "--decide-lines" || arg == "--line-decisions") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      (arg == "--decide-lines" ? o.decide_lines : o.line_decisions) = std::string(*v);
     } else if (arg == "--frames") {
       const auto v = value_of(i, arg);
       if (!v) return std::nullopt;
@@ -315,6 +326,25 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       return std::nullopt;
     }
     return o;
+  }
+  if (!o.decide_lines.empty()) {
+    if (!o.output.empty() || !o.aovs.empty() || o.samples || o.crop || o.frames || o.checkpoint_minutes ||
+        o.resume || o.spp || !o.line_decisions.empty()) {
+      *error =
+          "--decide-lines writes line decisions and renders nothing: leave out -o, --aov, --spp and the "
+          "other render options (--width, --height, --seed, --threads and --time apply)";
+      return std::nullopt;
+    }
+    if (std::string problem = check_outputs({{"--decide-lines " + o.decide_lines.string(), o.decide_lines}});
+        !problem.empty()) {
+      *error = std::move(problem);
+      return std::nullopt;
+    }
+    return o;
+  }
+  if (!o.line_decisions.empty() && !o.samples) {
+    *error = "--line-decisions is read by a slice of samples: add --samples A B";
+    return std::nullopt;
   }
   if (o.output.empty()) {
     *error = "no output file given: add -o OUT.png (or .pfm, .exr)";

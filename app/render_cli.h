@@ -34,6 +34,9 @@ struct RenderCliOptions {
   std::optional<std::pair<uint32_t, uint32_t>> samples;
   std::optional<PixelWindow> crop;          // --crop X0 Y0 X1 Y1
   std::optional<double> checkpoint_minutes;  // --checkpoint
+  // --decide-lines FILE: write adaptive line sampling's decisions and render nothing;
+  // --line-decisions FILE: a slice reads them (docs/final-renders.md, "Line decisions").
+  std::filesystem::path decide_lines, line_decisions;
   bool resume = false;
   std::optional<FrameRange> frames;
   bool quiet = false;

@@ -1,6 +1,7 @@
 // inkray-bench-final: what splitting a final render costs. Renders a still once,
-// then as K sample slices merged by inkray-merge, and prints the CPU time (user +
-// sys, from wait4) of each and the overhead; then renders an animation's frames
+// then as scripts/farm splits it (the line decisions written once, K sample slices
+// reading them, inkray-merge), and prints the CPU time (user + sys, from wait4) of
+// each and the overhead; then renders an animation's frames
 // and prints frames per hour. Runs the inkray-render and inkray-merge built next
 // to it, as a render farm would.
 #include <sys/resource.h>
@@ -138,18 +139,22 @@ int main(int argc, char** argv) {
 
   std::printf("%s at %dx%d, %d spp, %d threads; %d slices; median of %d runs\n", scene.c_str(), width, height,
               spp, threads, slices, runs);
-  std::vector<double> one_cpu, one_wall, split_cpu, split_wall, merge_cpu;
+  std::vector<double> one_cpu, one_wall, split_cpu, split_wall, decide_cpu, merge_cpu;
   bool identical = true;
   for (int r = 0; r < runs; ++r) {
     const Usage one = run(render, with({"--spp", std::to_string(spp), "-o", (work / "one.png").string()}));
     one_cpu.push_back(one.cpu);
     one_wall.push_back(one.wall);
-    Usage split;
+    const fs::path decisions = work / "line_decisions.bin";
+    Usage split = slices > 1 ? run(render, with({"--decide-lines", decisions.string()})) : Usage{};
+    decide_cpu.push_back(split.cpu);
     std::vector<std::string> merge_args = {(work / "merged.png").string(), "-q"};
     for (int k = 0; k < slices; ++k) {
       const int a = spp * k / slices, b = spp * (k + 1) / slices;
       const fs::path part = work / ("slice_" + std::to_string(k) + ".exr");
-      split += run(render, with({"--samples", std::to_string(a), std::to_string(b), "-o", part.string()}));
+      std::vector<std::string> args = {"--samples", std::to_string(a), std::to_string(b), "-o", part.string()};
+      if (a > 0) args.insert(args.end(), {"--line-decisions", decisions.string()});
+      split += run(render, with(args));
       merge_args.push_back(part.string());
     }
     const Usage merged = run(merge, merge_args);
@@ -163,6 +168,7 @@ int main(int argc, char** argv) {
   std::printf("%-28s %10s %10s\n", "", "CPU s", "wall s");
   std::printf("%-28s %10.2f %10.2f\n", "one run", median(one_cpu), median(one_wall));
   std::printf("%-28s %10.2f %10.2f\n", "slices + merge", median(split_cpu), median(split_wall));
+  std::printf("%-28s %10.2f\n", "  of which line decisions", median(decide_cpu));
   std::printf("%-28s %10.2f\n", "  of which inkray-merge", median(merge_cpu));
   std::printf("CPU overhead of %d slices: %+.1f%% (target: at most +5%%); merged PNG %s the one run's\n",
               slices, 100.0 * overhead, identical ? "is byte for byte" : "DIFFERS from");

@@ -3,6 +3,7 @@
 #include "core/film/film_partial.h"
 
 #include "core/film/partial_channels.h"
+#include "core/io/file_bytes.h"
 
 #include <tinyexr.h>
 
@@ -10,7 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -103,22 +104,6 @@ std::string take_error(const char* err, const char* fallback) {
   while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
   std::replace(s.begin(), s.end(), '\n', ' ');  // errors are one line
   return s;
-}
-
-bool read_bytes(const std::filesystem::path& file, std::string* bytes, std::string* error) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    *error = file.string() + ": cannot open the file";
-    return false;
-  }
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) {
-    *error = file.string() + ": cannot read the file";
-    return false;
-  }
-  *bytes = std::move(s).str();
-  return true;
 }
 
 // An attribute's name or type as read, for a message: one line of plain characters.
@@ -358,7 +343,8 @@ bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::uni
                   std::string* error) {
   const std::string label = file.string() + ": ";
   std::string bytes;
-  if (!read_bytes(file, &bytes, error)) return false;
+  // No bound: a partial's size follows from its header, which the EXR reader checks.
+  if (!read_file_bytes(file, std::numeric_limits<std::uintmax_t>::max(), &bytes, error)) return false;
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   EXRVersion version;
   if (ParseEXRVersionFromMemory(&version, data, bytes.size()) != TINYEXR_SUCCESS) {

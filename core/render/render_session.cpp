@@ -3,6 +3,7 @@
 #include "core/integrator/path_tracer.h"
 
 #include <cmath>
+#include <limits>
 
 namespace inkray {
 namespace {
@@ -117,17 +118,22 @@ void RenderSession::finish_probes(uint32_t pass) {
     mark_line_neighbourhoods(line_pixels_, film_->width(), film_->height(), lines_, active_window());
 }
 
+int RenderSession::tile_count() const {
+  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
+  const int tiles_y = (film_->height() + kTileSize - 1) / kTileSize;
+  return tiles_x * tiles_y;
+}
+
 bool RenderSession::render_pass() {
   cancelled_.store(false, std::memory_order_relaxed);
   const auto start = std::chrono::steady_clock::now();
-  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
-  const int tiles_y = (film_->height() + kTileSize - 1) / kTileSize;
+  const int tiles = tile_count();
   const uint32_t pass = stats_.passes;
   // A pass cancelled before resumes where it stopped: its finished tiles already
   // hold this pass's sample, and a second would repeat it.
-  if (tiles_done_.size() != size_t(tiles_x * tiles_y)) tiles_done_.assign(size_t(tiles_x * tiles_y), 0);
+  if (tiles_done_.size() != size_t(tiles)) tiles_done_.assign(size_t(tiles), 0);
   std::fill(worker_rays_.begin(), worker_rays_.end(), 0);
-  pool_.parallel_for(tiles_x * tiles_y, [&](int tile, int worker) {
+  pool_.parallel_for(tiles, [&](int tile, int worker) {
     if (tiles_done_[size_t(tile)] || cancelled_.load(std::memory_order_relaxed)) return;
     render_tile(tile, worker, pass);
     tiles_done_[size_t(tile)] = 1;
@@ -234,26 +240,67 @@ void RenderSession::replay_tile(int tile, uint32_t pass) {
   for_margin_pixels(tile, pass, replay);
 }
 
-void RenderSession::continue_from(uint32_t first, uint32_t next, const std::vector<uint8_t>& tiles_done) {
-  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
-  const int tiles_y = (film_->height() + kTileSize - 1) / kTileSize;
-  const size_t tiles = size_t(tiles_x * tiles_y);
+uint32_t RenderSession::replay_decisions(uint32_t next) {
+  const PixelWindow r = active_window();
+  const size_t width = size_t(film_->width());
+  const int tiles = tile_count();
+  uint32_t pass = 0;
+  for (; pass < next; ++pass) {
+    if (pass >= kLineProbeSamples || !lines_.adaptive) {
+      bool pending = false;
+      for (int y = r.y0; y < r.y1 && !pending; ++y)
+        for (int x = r.x0; x < r.x1 && !pending; ++x)
+          pending = line_decision_pending(lines_, line_pixels_[size_t(y) * width + size_t(x)]);
+      if (!pending) break;
+    }
+    pool_.parallel_for(tiles, [&](int tile, int) { replay_tile(tile, pass); });
+    finish_probes(pass);
+  }
+  return pass;
+}
+
+LineDecisions RenderSession::decide_lines() {
+  LineDecisions d;
+  d.width = film_->width();
+  d.height = film_->height();
+  if (!lines_.active) return d;
+  const PixelWindow kept = region_;
+  region_ = {};
+  // Pending pixels decide within a few passes of the probes (each traces at least one
+  // ray a pass until kMinSolidRays), so the bound is never reached.
+  d.decided_at = replay_decisions(std::numeric_limits<uint32_t>::max());
+  region_ = kept;
+  d.rays.resize(line_pixels_.size());
+  d.kinds.resize(line_pixels_.size());
+  for (size_t i = 0; i < line_pixels_.size(); ++i) {
+    d.rays[i] = line_pixels_[i].rays;
+    d.kinds[i] = line_pixels_[i].kind;
+    line_pixels_[i] = LinePixel{};
+  }
+  return d;
+}
+
+void RenderSession::continue_from(uint32_t first, uint32_t next, const std::vector<uint8_t>& tiles_done,
+                                  const LineDecisions* decided) {
+  const size_t tiles = size_t(tile_count());
   const bool in_progress = tiles_done.size() == tiles;
   if (lines_.active) {
     const PixelWindow r = active_window();
     const size_t width = size_t(film_->width());
-    // Pass by pass while decisions are pending; then each pixel's count at once.
+    // Pass by pass while decisions are pending (or read where they were kept); then
+    // each pixel's count at once.
     uint32_t pass = 0;
-    for (; pass < next; ++pass) {
-      if (pass >= kLineProbeSamples || !lines_.adaptive) {
-        bool pending = false;
-        for (int y = r.y0; y < r.y1 && !pending; ++y)
-          for (int x = r.x0; x < r.x1 && !pending; ++x)
-            pending = line_decision_pending(lines_, line_pixels_[size_t(y) * width + size_t(x)]);
-        if (!pending) break;
+    if (decided && decided->decided_at <= next && decided->width == film_->width() &&
+        decided->height == film_->height() && decided->rays.size() == line_pixels_.size() &&
+        decided->kinds.size() == line_pixels_.size()) {
+      for (size_t i = 0; i < line_pixels_.size(); ++i) {
+        line_pixels_[i] = LinePixel{};
+        line_pixels_[i].rays = decided->rays[i];
+        line_pixels_[i].kind = decided->kinds[i];
       }
-      pool_.parallel_for(int(tiles), [&](int tile, int) { replay_tile(tile, pass); });
-      finish_probes(pass);
+      pass = decided->decided_at;
+    } else {
+      pass = replay_decisions(next);
     }
     const uint32_t seed = uint32_t(scene_->settings.seed);
     if (pass < next)

@@ -58,7 +58,14 @@ class RenderSession {
   // deciding) or counted, so every later pass traces what a render from pass 0
   // would. Call on a film fresh from set_scene, or loaded with load_film.
   // A slice of passes [A, B): continue_from(A, A), then B - A passes.
-  void continue_from(uint32_t first, uint32_t next, const std::vector<uint8_t>& tiles_done = {});
+  // With `decided` (decide_lines of this scene and film size) and next at or after its
+  // decided_at, nothing is traced again: the decisions are read from it.
+  void continue_from(uint32_t first, uint32_t next, const std::vector<uint8_t>& tiles_done = {},
+                     const LineDecisions* decided = nullptr);
+  // Traces what adaptive line sampling's decisions read over the whole film, from pass
+  // 0 until no pixel is deciding, and returns the decisions (line_sampling.h). The
+  // film is untouched and the session stays ready to render from pass 0.
+  LineDecisions decide_lines();
   // Adds a film of the region's size (a checkpoint read back) at the region's place.
   void load_film(const Film& window_film);
   uint32_t first_pass() const { return first_pass_; }
@@ -94,10 +101,14 @@ class RenderSession {
   // whole film. Calls f(x, y) for each in the tile.
   template <class F> void for_margin_pixels(int tile, uint32_t pass, F&& f) const;
   PixelWindow tile_window(int tile) const;
+  int tile_count() const;
   PixelWindow active_window() const;  // the region, or the whole film
   // The lines of the sample (x, y, pass) alone, as render_tile finds them, given `count` rays.
   LineSample trace_lines_only(int x, int y, uint32_t pass, int count, uint64_t* rays) const;
   void finish_probes(uint32_t pass);
+  // Replays decisions from pass 0 (line_pixels_ fresh) until `next` or until no pixel of
+  // the active window is deciding; returns the pass it stopped at.
+  uint32_t replay_decisions(uint32_t next);
 
   ThreadBudget pool_;
   std::shared_ptr<const RenderScene> scene_;

@@ -87,6 +87,40 @@ TEST_F(FinalRender, SlicesMergeToTheImageOfOneRun) {
   EXPECT_EQ(read(dir_ / "one.pfm").pixels, read(dir_ / "staged.pfm").pixels);
 }
 
+// Slices after the first read the line decisions written once by --decide-lines; one
+// of another render is refused with one line.
+TEST_F(FinalRender, SlicesReadingLineDecisionsMergeToTheImageOfOneRun) {
+  ASSERT_EQ(render("--spp 40 -o " + path("one.pfm") + " --aov outline=" + path("one_lines.pfm")).exit_code, 0);
+  RunResult r = render("--decide-lines " + path("lines.bin"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "lines.bin"));
+  r = render("--samples 0 20 -o " + path("a.exr"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::pair<const char*, const char*> slices[] = {{"20 30", "b.exr"}, {"30 40", "c.exr"}};
+  for (const auto& [range, file] : slices) {
+    r = render("--line-decisions " + path("lines.bin") + " --samples " + range + " -o " + path(file));
+    ASSERT_EQ(r.exit_code, 0) << range << "\n" << r.output;
+  }
+  r = merge(path("merged.pfm") + " " + path("a.exr") + " " + path("b.exr") + " " + path("c.exr") +
+            " --aov outline=" + path("merged_lines.pfm"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read(dir_ / "one.pfm").pixels, read(dir_ / "merged.pfm").pixels);
+  EXPECT_EQ(read(dir_ / "one_lines.pfm").pixels, read(dir_ / "merged_lines.pfm").pixels);
+
+  // Decisions of another seed; --decide-lines with an image; --line-decisions alone.
+  r = render("--seed 7 --samples 20 30 -o " + path("x.exr") + " --line-decisions " + path("lines.bin"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("line decisions of another render: seed"), std::string::npos) << r.output;
+  EXPECT_EQ(lines_of(r.output), 1u) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "x.exr"));
+  r = render("--decide-lines " + path("l2.bin") + " -o " + path("y.png"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(lines_of(r.output), 1u) << r.output;
+  r = render("-o " + path("y.png") + " --line-decisions " + path("lines.bin"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("add --samples A B"), std::string::npos) << r.output;
+}
+
 TEST_F(FinalRender, CropWindowsMergeToTheWholeImage) {
   ASSERT_EQ(render("--spp 6 -o " + path("one.pfm")).exit_code, 0);
   std::string parts;

@@ -112,7 +112,9 @@ step "submitting"
 frames_args=("$scene" -o "$work/frames/anim_####.png" --frames 1-12 --width 64 --height 48 --spp 4)
 run_farm "${frames_args[@]}"
 frame_jobs="$(submitted)"
-still_args=("$still" -o "$work/still/cornell.pfm" --slices 4 --spp 16 --width 96 --height 96)
+# 80 samples: the slices after the first start at 20, 40 and 60, after the line decisions
+# are all made (sample 17 here), so they read them from the decisions job's file.
+still_args=("$still" -o "$work/still/cornell.pfm" --slices 4 --spp 80 --width 96 --height 96)
 run_farm "${still_args[@]}"
 still_jobs="$(submitted)"
 tiles_args=("$still" -o "$work/tiles/cornell.pfm" --aov "depth=$work/tiles/depth.pfm" --tiles 2x2 --spp 16
@@ -124,12 +126,13 @@ tiles_jobs="$(submitted)"
 step "rendering the references on one machine"
 mkdir -p "$work/ref"
 "${render[@]}" "$scene" --frames 1-12 -o "$work/ref/anim_####.png" --width 64 --height 48 --spp 4 -q
-"${render[@]}" "$still" -o "$work/ref/cornell.pfm" --aov "depth=$work/ref/depth.pfm" --spp 16 --width 96 \
+"${render[@]}" "$still" -o "$work/ref/cornell.pfm" --spp 80 --width 96 --height 96 -q
+"${render[@]}" "$still" -o "$work/ref/tiles.pfm" --aov "depth=$work/ref/depth.pfm" --spp 16 --width 96 \
   --height 96 -q
 
 step "waiting for jobs $frame_jobs$still_jobs$tiles_jobs"
 wait_jobs 12 "$frame_jobs"
-wait_jobs 5 "$still_jobs"
+wait_jobs 6 "$still_jobs"  # the line decisions, 4 slices, the merge
 wait_jobs 5 "$tiles_jobs"
 
 step "comparing"
@@ -138,9 +141,10 @@ for f in $(seq -f '%04g' 1 12); do
   cmp "$work/frames/anim_$f.png" "$work/ref/anim_$f.png" || fail "frame $f differs from the one-machine render"
 done
 [ "$(find "$work/still/cornell.farm/partials" -name '*.exr' | wc -l)" = 4 ] || fail "expected 4 partial images"
+[ -f "$work/still/cornell.farm/partials/line_decisions.bin" ] || fail "the line decisions were not written"
 # inkray-merge promises the image of one render of all the samples, exactly.
 differing=()
-for pair in still/cornell.pfm:ref/cornell.pfm tiles/cornell.pfm:ref/cornell.pfm tiles/depth.pfm:ref/depth.pfm; do
+for pair in still/cornell.pfm:ref/cornell.pfm tiles/cornell.pfm:ref/tiles.pfm tiles/depth.pfm:ref/depth.pfm; do
   echo "$work/${pair%%:*} against $work/${pair#*:}:"
   "$python" "$repo/tests/farm/compare_pfm.py" "$work/${pair%%:*}" "$work/${pair#*:}" 0 0 || differing+=("${pair%%:*}")
 done

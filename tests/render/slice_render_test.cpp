@@ -53,13 +53,14 @@ std::string film_difference(const Film& a, const Film& b, const PixelWindow& w) 
   return "";
 }
 
-// Renders passes [first, end) of `window` (empty: the whole image) and adds them to `into`.
+// Renders passes [first, end) of `window` (empty: the whole image) and adds them to
+// `into`, reading the line decisions from `decided` when given.
 void render_slice(const std::shared_ptr<const RenderScene>& scene, uint32_t first, uint32_t end,
-                  const PixelWindow& window, Film& into) {
+                  const PixelWindow& window, Film& into, const LineDecisions* decided = nullptr) {
   RenderSession s(2);
   s.set_scene(scene, some_aovs());
   s.set_region(window);
-  s.continue_from(first, first);
+  s.continue_from(first, first, {}, decided);
   for (uint32_t p = first; p < end; ++p) ASSERT_TRUE(s.render_pass());
   const PixelWindow w = window.empty() ? PixelWindow{0, 0, into.width(), into.height()} : window;
   for (int y = w.y0; y < w.y1; ++y)
@@ -103,6 +104,42 @@ TEST(SliceRender, SlicesOfALargerImageAddUpToTheFilmOfOneRender) {
   render_slice(c.scene, 13, 24, {}, merged);
   EXPECT_EQ(film_difference(one.film(), merged, {0, 0, 96, 96}), "");
   EXPECT_EQ(one.film().resolve().pixels, merged.resolve().pixels);
+  EXPECT_EQ(one.film().resolve_aov(Aov::outline).pixels, merged.resolve_aov(Aov::outline).pixels);
+}
+
+// Slices that read the decisions made once (decide_lines) instead of tracing them
+// again: the same film, for the whole image and for crop windows; a slice that starts
+// before the decisions were all made traces them as before.
+TEST(SliceRender, SlicesReadingTheLineDecisionsAddUpToTheFilmOfOneRender) {
+  const CompileResult c = compile_scene(outlined_box(64, 48));
+  ASSERT_TRUE(c.scene);
+  RenderSession maker(2);
+  maker.set_scene(c.scene, some_aovs());
+  const LineDecisions decided = maker.decide_lines();
+  ASSERT_EQ(decided.width, 64);
+  ASSERT_EQ(decided.rays.size(), size_t(64 * 48));
+  EXPECT_GE(decided.decided_at, kLineProbeSamples);
+  EXPECT_LT(decided.decided_at, 30u);
+  EXPECT_TRUE(std::any_of(decided.kinds.begin(), decided.kinds.end(),
+                          [](LineKind k) { return k == LineKind::edge; }));
+  EXPECT_TRUE(std::any_of(decided.kinds.begin(), decided.kinds.end(),
+                          [](LineKind k) { return k == LineKind::quiet; }));
+  RenderSession one(2);
+  one.set_scene(c.scene, some_aovs());
+  const uint32_t passes = decided.decided_at + 14;
+  for (uint32_t p = 0; p < passes; ++p) ASSERT_TRUE(one.render_pass());
+  // The session that made them renders from pass 0 as a fresh one does.
+  for (uint32_t p = 0; p < passes; ++p) ASSERT_TRUE(maker.render_pass());
+  EXPECT_EQ(film_difference(one.film(), maker.film(), {0, 0, 64, 48}), "");
+
+  const uint32_t cut = decided.decided_at + 3;
+  Film merged(64, 48, some_aovs(), true);
+  render_slice(c.scene, 0, 2, {}, merged, &decided);  // before the decisions: traced
+  render_slice(c.scene, 2, cut, {}, merged, &decided);
+  render_slice(c.scene, cut, cut + 5, {}, merged, &decided);
+  render_slice(c.scene, cut + 5, passes, {0, 0, 64, 20}, merged, &decided);
+  render_slice(c.scene, cut + 5, passes, {0, 20, 64, 48}, merged, &decided);
+  EXPECT_EQ(film_difference(one.film(), merged, {0, 0, 64, 48}), "");
   EXPECT_EQ(one.film().resolve_aov(Aov::outline).pixels, merged.resolve_aov(Aov::outline).pixels);
 }
 

@@ -47,6 +47,21 @@ struct LinePixel {
   std::array<float, kLineTypeCount> coverage{};
 };
 
+// What line sampling decided for every pixel of a film, at the first pass
+// `decided_at` (at or after the probes) before which no pixel is still deciding:
+// from there on a pixel's samples follow from its kind and ray count alone
+// (stencil_rays_between), so a render that starts at or after `decided_at` needs
+// nothing else of the passes before it. Made once for a split render and read by
+// its slices instead of each tracing the decisions again (docs/final-renders.md,
+// "Line decisions").
+struct LineDecisions {
+  int width = 0, height = 0;  // of the film; no pixels when the scene draws no lines
+  uint32_t decided_at = 0;
+  std::vector<uint32_t> rays;  // per pixel, row by row: LinePixel::rays at decided_at
+  std::vector<LineKind> kinds;
+  bool operator==(const LineDecisions&) const = default;
+};
+
 // Film pixels a stencil reaches: a pixel's kind depends on the probes of the
 // pixels this close to it.
 int line_reach(const LineSetup& setup);
