@@ -26,10 +26,27 @@ Light compile_light(const LightDesc& desc, float scene_radius) {
       desc.data);
 }
 
+// A quad as make_quad lays it out (corner, +u, +u+v, +v; two triangles) whose edges
+// meet at right angles: sampled by solid angle.
+std::optional<RectAreaLight> rect_light_for(const TriangleMesh& mesh, uint32_t object) {
+  // (positions holds one more point: Embree's padding, triangle_mesh.h)
+  const std::vector<uint32_t> quad = {0, 1, 2, 0, 2, 3};
+  if (mesh.positions.size() < 4 || mesh.indices != quad) return std::nullopt;
+  const Point3* p = mesh.positions.data();
+  const Vec3 u = p[1] - p[0], v = p[3] - p[0];
+  const float lu = glm::length(u), lv = glm::length(v);
+  if (!(lu > 0.f) || !(lv > 0.f) || !std::isfinite(lu * lv)) return std::nullopt;
+  const float tolerance = 1e-5f * (lu + lv);
+  if (glm::length(p[2] - (p[0] + u + v)) > tolerance || std::abs(glm::dot(u, v)) > 1e-5f * lu * lv)
+    return std::nullopt;
+  return RectAreaLight{object, p[0], u / lu, v / lv, lu, lv};
+}
+
 // Emissive shapes become area lights when they can be sampled exactly.
 std::optional<Light> area_light_for(const RenderScene& scene, uint32_t object) {
   const Shape& shape = scene.geometry.shape(object);
   if (const auto* mesh = std::get_if<TriangleMesh>(&shape)) {
+    if (auto rect = rect_light_for(*mesh, object)) return *rect;
     std::vector<float> areas(mesh->triangle_count());
     double total = 0.0;
     for (size_t t = 0; t < areas.size(); ++t) total += areas[t] = mesh->triangle_area(t);

@@ -1,8 +1,10 @@
 #include "core/integrator/light_sampling.h"
 
 #include "core/math/float_error.h"
+#include "core/sampling/spherical_rectangle.h"
 #include "core/sampling/warp.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace inkray {
@@ -79,6 +81,48 @@ std::optional<LightSample> sample_mesh(const RenderScene& scene, const MeshAreaL
   return surface_sample(scene, ref, l.object, on_light, area_to_solid_angle(1.f / l.area, ref.p, on_light));
 }
 
+// Solid-angle sampling where it pays: near the rectangle, where distance and cosine
+// vary across it and area sampling's weights with them. From further than
+// kSolidAngleReach diagonals from its centre they vary by under a quarter, and area
+// sampling is as good for a fraction of the cost. Not either for a rectangle filling
+// nearly the hemisphere, nor one so small that its spherical excess is lost to
+// rounding (the bounds pbrt-v4 uses for its spherical rectangles and triangles).
+constexpr float kSolidAngleReach = 2.f;
+
+std::optional<SphericalRectangle> rect_solid_angle(const RectAreaLight& l, const Point3& from) {
+  const Vec3 to_center = l.corner + 0.5f * (l.width * l.x + l.height * l.y) - from;
+  const float reach = kSolidAngleReach * kSolidAngleReach * (l.width * l.width + l.height * l.height);
+  if (glm::dot(to_center, to_center) > reach) return std::nullopt;
+  auto r = spherical_rectangle(from, l.corner, l.x, l.y, l.width, l.height);
+  if (!r || r->solid_angle < 3e-4 || r->solid_angle > 6.22) return std::nullopt;
+  return r;
+}
+
+// The mesh's interaction at the point corner + s * width * x + t * height * y of its
+// rectangle, laid out by make_quad (triangles 0 1 2 and 0 2 3 over the corners
+// corner, +u, +u+v, +v): normals, uv and position error as a traced ray finds them.
+SurfaceInteraction rect_point(const TriangleMesh& mesh, float s, float t) {
+  s = std::clamp(s, 0.f, 1.f);
+  t = std::clamp(t, 0.f, 1.f);
+  return s >= t ? mesh_point(mesh, 0, Vec2(1.f - s, s - t)) : mesh_point(mesh, 1, Vec2(1.f - t, s));
+}
+
+std::optional<LightSample> sample_rect(const RenderScene& scene, const RectAreaLight& l, const LightReference& ref,
+                                       Vec2 u) {
+  const auto& mesh = std::get<TriangleMesh>(scene.geometry.shape(l.object));
+  const auto solid = rect_solid_angle(l, ref.p);
+  Vec2 st = u;  // the point's fractions of the edges
+  if (solid) {
+    const Vec3 d = sample_spherical_rectangle(*solid, u) - l.corner;
+    st = Vec2(glm::dot(d, l.x) / l.width, glm::dot(d, l.y) / l.height);
+  }
+  SurfaceInteraction on_light = rect_point(mesh, st.x, st.y);
+  on_light.object = l.object;
+  const float pdf = solid ? float(1.0 / solid->solid_angle)
+                          : area_to_solid_angle(1.f / (l.width * l.height), ref.p, on_light);
+  return surface_sample(scene, ref, l.object, on_light, pdf);
+}
+
 std::optional<LightSample> sample_sphere(const RenderScene& scene, const SphereAreaLight& l,
                                          const LightReference& ref, Vec2 u) {
   const auto& sphere = std::get<Sphere>(scene.geometry.shape(l.object));
@@ -150,6 +194,8 @@ std::optional<LightSample> sample_light(const RenderScene& scene, const Light& l
           return s;
         } else if constexpr (std::is_same_v<T, MeshAreaLight>) {
           return sample_mesh(scene, l, ref, u);
+        } else if constexpr (std::is_same_v<T, RectAreaLight>) {
+          return sample_rect(scene, l, ref, u);
         } else if constexpr (std::is_same_v<T, SphereAreaLight>) {
           return sample_sphere(scene, l, ref, u);
         } else {
@@ -162,6 +208,10 @@ std::optional<LightSample> sample_light(const RenderScene& scene, const Light& l
 float light_pdf(const RenderScene& /*scene*/, const Light& light, const LightReference& ref, const Vec3& /*wi*/,
                 const SurfaceInteraction& on_light) {
   if (const auto* m = std::get_if<MeshAreaLight>(&light)) return area_to_solid_angle(1.f / m->area, ref.p, on_light);
+  if (const auto* r = std::get_if<RectAreaLight>(&light)) {
+    if (const auto solid = rect_solid_angle(*r, ref.p)) return float(1.0 / solid->solid_angle);
+    return area_to_solid_angle(1.f / (r->width * r->height), ref.p, on_light);
+  }
   if (const auto* s = std::get_if<SphereAreaLight>(&light)) {
     const float cos_max = sphere_cos_max(*s, ref.p);
     if (cos_max > 0.f) return uniform_cone_pdf(cos_max);
@@ -181,11 +231,13 @@ float light_power(const RenderScene& scene, const Light& light) {
           return 2.f * kPi * luminance(l.intensity) * (1.f - 0.5f * (l.cos_falloff + l.cos_total));
         } else if constexpr (std::is_same_v<T, DirectionalLight>) {
           return kPi * sqr(l.scene_radius) * luminance(l.irradiance);
-        } else if constexpr (std::is_same_v<T, MeshAreaLight> || std::is_same_v<T, SphereAreaLight>) {
+        } else if constexpr (std::is_same_v<T, MeshAreaLight> || std::is_same_v<T, RectAreaLight> ||
+                             std::is_same_v<T, SphereAreaLight>) {
           const Material& m = scene.material_of(l.object);
           const bool two_sided = std::get<EmissiveMaterial>(m).two_sided;
           float area = 0.f;
           if constexpr (std::is_same_v<T, MeshAreaLight>) area = l.area;
+          else if constexpr (std::is_same_v<T, RectAreaLight>) area = l.width * l.height;
           else area = 4.f * kPi * l.radius * l.radius;
           return kPi * (two_sided ? 2.f : 1.f) * area * luminance(material_average_emission(m));
         } else {

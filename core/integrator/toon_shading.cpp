@@ -146,7 +146,7 @@ ToonShade toon_shade(const RenderScene& scene, const ToonMaterial& m, const Toon
   Color tint_sum(0.f);
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
-    const bool sampled = std::holds_alternative<MeshAreaLight>(light) ||
+    const bool sampled = std::holds_alternative<MeshAreaLight>(light) || std::holds_alternative<RectAreaLight>(light) ||
                          std::holds_alternative<SphereAreaLight>(light) ||
                          (std::holds_alternative<EnvironmentLight>(light) && m.environment_shadows);
     const LightTerm t = light_term(

@@ -34,6 +34,14 @@ struct MeshAreaLight {
   DiscreteDistribution triangles;
   float area = 0.f;
 };
+// Emissive rectangle (a quad whose edges meet at right angles, after its transform):
+// sampled uniformly in the solid angle it subtends (core/sampling/spherical_rectangle.h).
+struct RectAreaLight {
+  uint32_t object = 0;
+  Point3 corner{0.f};
+  Vec3 x{1.f, 0.f, 0.f}, y{0.f, 0.f, 1.f};  // unit edge directions
+  float width = 1.f, height = 1.f;         // edge lengths
+};
 // Emissive sphere without shear or non-uniform scale: sampled by solid angle.
 struct SphereAreaLight {
   uint32_t object = 0;
@@ -50,7 +58,8 @@ struct EnvironmentLight {
   }
 };
 
-using Light = std::variant<PointLight, SpotLight, DirectionalLight, MeshAreaLight, SphereAreaLight, EnvironmentLight>;
+using Light = std::variant<PointLight, SpotLight, DirectionalLight, MeshAreaLight, RectAreaLight, SphereAreaLight,
+                           EnvironmentLight>;
 
 // The receiving point: where the shadow ray starts.
 struct LightReference {

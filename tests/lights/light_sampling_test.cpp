@@ -166,12 +166,14 @@ TEST(LightSampling, DirectionalLightGivesItsIrradiance) {
 // ---------------------------------------------------------------- mesh area light
 
 // A square emitter of half-width a, facing down at height h above the origin.
-SceneDesc square_lamp_scene(float a, float h, float le) {
+// A square lamp of half-width a at height h above the origin, or (sheared) the
+// parallelogram with the same corner, first edge and area.
+SceneDesc square_lamp_scene(float a, float h, float le, bool sheared = false) {
   SceneDesc d = with_lights({});
   d.materials.push_back({"lamp", EmissiveDesc{Color(le), 1.f, false}, {}});
   // cross(edge_u, edge_v) points down: the lamp's front faces the origin.
-  d.objects.push_back(
-      object("lamp", QuadDesc{{-a, h, -a}, {2.f * a, 0.f, 0.f}, {0.f, 0.f, 2.f * a}}, "lamp"));
+  const Vec3 edge_v = sheared ? Vec3(a, 0.f, 2.f * a) : Vec3(0.f, 0.f, 2.f * a);
+  d.objects.push_back(object("lamp", QuadDesc{{-a, h, -a}, {2.f * a, 0.f, 0.f}, edge_v}, "lamp"));
   return d;
 }
 
@@ -182,17 +184,21 @@ float square_irradiance(float a, float h, float le) {
   return float(4.0 * le * (x / sx) * std::atan(x / sx));
 }
 
-TEST(LightSampling, MeshAreaLightPdfIsInverseAreaInSolidAngle) {
+// A quad with square corners is sampled uniformly in the solid angle it subtends:
+// every sample's pdf is 1 / (the square's solid angle), light_pdf agrees for the
+// point a ray finds, and the irradiance estimate is the analytic one.
+TEST(LightSampling, RectAreaLightIsSampledUniformlyInSolidAngle) {
   const float a = 0.75f, h = 1.5f, le = 2.f;
   const auto scene = compile(square_lamp_scene(a, h, le));
   ASSERT_TRUE(scene);
   ASSERT_EQ(scene->lights.size(), 1u);
   const Light& light = scene->lights[0];
-  const auto* mesh = std::get_if<MeshAreaLight>(&light);
-  ASSERT_TRUE(mesh);
-  const float area = 4.f * a * a;
-  EXPECT_NEAR(mesh->area, area, 1e-5f);
-  EXPECT_EQ(scene->objects[mesh->object].light, 0);
+  const auto* rect = std::get_if<RectAreaLight>(&light);
+  ASSERT_TRUE(rect);
+  EXPECT_NEAR(rect->width * rect->height, 4.f * a * a, 1e-5f);
+  EXPECT_EQ(scene->objects[rect->object].light, 0);
+  // The solid angle of a square seen from a point on its axis.
+  const float solid_angle = 4.f * std::asin(a * a / (a * a + h * h));
 
   const LightReference ref = origin_facing_up();
   Pcg32 rng(7);
@@ -205,13 +211,59 @@ TEST(LightSampling, MeshAreaLightPdfIsInverseAreaInSolidAngle) {
       ASSERT_FALSE(s->is_delta);
       ASSERT_GT(s->wi.y, 0.f);
       expect_color_near(s->radiance, Color(le), 1e-6f);
-      // The point lies on the plane y = h at distance h / wi.y, seen at cosine wi.y:
-      // pdf = (1 / area) * dist^2 / cos.
-      const float expected_pdf = sqr(h) / (area * s->wi.y * s->wi.y * s->wi.y);
-      ASSERT_NEAR(s->pdf, expected_pdf, 1e-4f * expected_pdf);
+      ASSERT_NEAR(s->pdf, 1.f / solid_angle, 1e-4f / solid_angle);
       irradiance += double(s->radiance.g * s->wi.y / s->pdf);
       if ((i * kGrid + j) % 97 == 0) {
-        // light_pdf for the point a ray in the same direction finds.
+        const auto on_light = trace(*scene, ref.p, s->wi);
+        ASSERT_TRUE(on_light);
+        ASSERT_EQ(on_light->object, rect->object);
+        EXPECT_NEAR(glm::length(on_light->p - (ref.p + s->wi * (h / s->wi.y))), 0.f, 1e-4f);
+        EXPECT_NEAR(light_pdf(*scene, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
+        ++checked_pdf;
+      }
+    }
+  EXPECT_GT(checked_pdf, 600);
+  const float expected = square_irradiance(a, h, le);
+  EXPECT_NEAR(irradiance / double(kGrid * kGrid), expected, 0.001 * expected);
+
+  // The emitter is one-sided: from above it sends nothing.
+  const LightReference above{Point3(0.f, 2.f * h, 0.f), Vec3(0.f), Normal3(0.f, -1.f, 0.f)};
+  EXPECT_FALSE(sample_light(*scene, light, above, Vec2(0.4f, 0.4f)));
+  // Seen from almost in its plane it subtends too little to sample by solid angle:
+  // area sampling then, with light_pdf still agreeing.
+  const LightReference edge_on{Point3(40.f, h - 0.001f, 0.f), Vec3(0.f), Normal3(-1.f, 0.f, 0.f)};
+  const auto grazing = sample_light(*scene, light, edge_on, Vec2(0.3f, 0.6f));
+  ASSERT_TRUE(grazing);
+  const auto hit = trace(*scene, edge_on.p, grazing->wi);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(light_pdf(*scene, light, edge_on, grazing->wi, *hit), grazing->pdf, 1e-3f * grazing->pdf);
+}
+
+// A parallelogram is sampled by area: pdf = (1 / area) * dist^2 / cos.
+TEST(LightSampling, MeshAreaLightPdfIsInverseAreaInSolidAngle) {
+  const float a = 0.75f, h = 1.5f, le = 2.f;
+  const auto scene = compile(square_lamp_scene(a, h, le, true));
+  ASSERT_TRUE(scene);
+  ASSERT_EQ(scene->lights.size(), 1u);
+  const Light& light = scene->lights[0];
+  const auto* mesh = std::get_if<MeshAreaLight>(&light);
+  ASSERT_TRUE(mesh);
+  const float area = 4.f * a * a;
+  EXPECT_NEAR(mesh->area, area, 1e-5f);
+  EXPECT_EQ(scene->objects[mesh->object].light, 0);
+
+  const LightReference ref = origin_facing_up();
+  Pcg32 rng(7);
+  int checked_pdf = 0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const auto s = sample_light(*scene, light, ref, grid_sample(i, j, rng));
+      ASSERT_TRUE(s);
+      ASSERT_GT(s->wi.y, 0.f);
+      // The point lies on the plane y = h at distance h / wi.y, seen at cosine wi.y.
+      const float expected_pdf = sqr(h) / (area * s->wi.y * s->wi.y * s->wi.y);
+      ASSERT_NEAR(s->pdf, expected_pdf, 1e-4f * expected_pdf);
+      if ((i * kGrid + j) % 97 == 0) {
         const auto on_light = trace(*scene, ref.p, s->wi);
         ASSERT_TRUE(on_light);
         ASSERT_EQ(on_light->object, mesh->object);
@@ -220,32 +272,29 @@ TEST(LightSampling, MeshAreaLightPdfIsInverseAreaInSolidAngle) {
       }
     }
   EXPECT_GT(checked_pdf, 600);
-  const float expected = square_irradiance(a, h, le);
-  EXPECT_NEAR(irradiance / double(kGrid * kGrid), expected, 0.002 * expected);
-
-  // The emitter is one-sided: from above it sends nothing.
-  const LightReference above{Point3(0.f, 2.f * h, 0.f), Vec3(0.f), Normal3(0.f, -1.f, 0.f)};
-  EXPECT_FALSE(sample_light(*scene, light, above, Vec2(0.4f, 0.4f)));
 }
 
-// Over the directions that reach the square, light_pdf integrates to 1
-// (uniform hemisphere directions, 256^2 stratified, tolerance 1%).
-TEST(LightSampling, MeshAreaLightPdfIntegratesToOne) {
-  const auto scene = compile(square_lamp_scene(1.f, 1.f, 1.f));
-  ASSERT_TRUE(scene);
-  const Light& light = scene->lights[0];
-  const LightReference ref = origin_facing_up();
-  Pcg32 rng(11);
-  double sum = 0.0;
-  for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j) {
-      const Vec3 h = sample_uniform_hemisphere(grid_sample(i, j, rng));
-      const Vec3 wi(h.x, h.z, h.y);  // the hemisphere around +y
-      const auto on_light = trace(*scene, ref.p, wi);
-      if (on_light && on_light->object == std::get<MeshAreaLight>(light).object)
-        sum += light_pdf(*scene, light, ref, wi, *on_light) / uniform_hemisphere_pdf();
-    }
-  EXPECT_NEAR(sum / double(kGrid * kGrid), 1.0, 0.01);
+// Over the directions that reach the lamp, light_pdf integrates to 1, for the
+// rectangle and the parallelogram (uniform hemisphere directions, 256^2
+// stratified, tolerance 1%).
+TEST(LightSampling, AreaLightPdfIntegratesToOne) {
+  for (const bool sheared : {false, true}) {
+    const auto scene = compile(square_lamp_scene(1.f, 1.f, 1.f, sheared));
+    ASSERT_TRUE(scene);
+    const Light& light = scene->lights[0];
+    const LightReference ref = origin_facing_up();
+    Pcg32 rng(11);
+    double sum = 0.0;
+    for (int i = 0; i < kGrid; ++i)
+      for (int j = 0; j < kGrid; ++j) {
+        const Vec3 h = sample_uniform_hemisphere(grid_sample(i, j, rng));
+        const Vec3 wi(h.x, h.z, h.y);  // the hemisphere around +y
+        const auto on_light = trace(*scene, ref.p, wi);
+        if (on_light && scene->objects[on_light->object].light == 0)
+          sum += light_pdf(*scene, light, ref, wi, *on_light) / uniform_hemisphere_pdf();
+      }
+    EXPECT_NEAR(sum / double(kGrid * kGrid), 1.0, 0.01) << (sheared ? "parallelogram" : "rectangle");
+  }
 }
 
 // ---------------------------------------------------------------- sphere area light
