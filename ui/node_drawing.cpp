@@ -98,14 +98,14 @@ struct RowWidgets {
     if constexpr (std::is_same_v<F, Vec3>) {
       if (p.kind == ParamKind::color) {
         if (color_bar(p, field, width)) bar_changed = true, bar_param = p.name;
-        generated.key_marks(p);
+        generated.key_marks(p, top.x + width - 0.5f * ImGui::GetFrameHeight());  // in the bar: the label fills the row
       } else {
         generated(p, field);
       }
     } else if constexpr (std::is_same_v<F, ColorInput>) {
       if (Color* constant = std::get_if<Color>(&field)) {
         if (color_bar(p, *constant, width)) bar_changed = true, bar_param = p.name;
-        generated.key_marks(p);
+        generated.key_marks(p, top.x + width - 0.5f * ImGui::GetFrameHeight());  // in the bar: the label fills the row
       } else {
         generated(p, field);  // a texture object kept from a plain material: its own widgets
       }

@@ -45,7 +45,7 @@ void draw_key_diamond(ImDrawList* draw, float x, float y, float r, unsigned fill
   if (outline != 0) draw->AddQuad(top, right, bottom, left, outline, std::max(1.f, r * 0.3f));
 }
 
-void ParamWidgets::key_marks(const Param& p) {
+void ParamWidgets::key_marks(const Param& p, float mark_x) {
   if (!keys || !keys->document) return;
   const SceneDesc& doc = *keys->document;
   std::string param = key_group;
@@ -57,9 +57,11 @@ void ParamWidgets::key_marks(const Param& p) {
   if (state != KeyState::none) {
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     const float r = ImGui::GetFontSize() * 0.3f;
-    const float x = hi.x + ImGui::GetStyle().ItemInnerSpacing.x + r, y = 0.5f * (lo.y + hi.y);
+    const float x = mark_x >= 0.f ? mark_x : hi.x + ImGui::GetStyle().ItemInnerSpacing.x + r;
+    const float y = 0.5f * (lo.y + hi.y);
     if (state == KeyState::keyed) {
-      draw_key_diamond(ImGui::GetWindowDrawList(), x, y, r, kKeyFill, 0);
+      // Over a colour the yellow needs an edge to be seen.
+      draw_key_diamond(ImGui::GetWindowDrawList(), x, y, r, kKeyFill, mark_x >= 0.f ? 0xFF202020u : 0u);
     } else {
       draw_key_diamond(ImGui::GetWindowDrawList(), x, y, r, 0, kAnimatedMark);
     }

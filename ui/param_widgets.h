@@ -103,8 +103,9 @@ struct ParamWidgets {
 
   // The key mark beside a keyable field, its menu, and I / Alt+I while it is hovered:
   // called by every widget here, and after a field drawn by other code (the node
-  // editor's colour bars), with that field as ImGui's last item.
-  void key_marks(const Param& p);
+  // editor's colour bars), with that field as ImGui's last item. `mark_x` places the
+  // mark's centre elsewhere than after the item (inside a colour bar that fills its row).
+  void key_marks(const Param& p, float mark_x = -1.f);
 
  private:
   bool choice_widget(const Param& p, int* index);
