@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <memory>
+#include <string>
 #include <thread>
 
 namespace inkray {
@@ -67,16 +69,29 @@ void render_slice(const std::shared_ptr<const RenderScene>& scene, uint32_t firs
     for (int x = w.x0; x < w.x1; ++x) into.add_pixel(x, y, s.film().pixel(x, y));
 }
 
+// A session that rendered passes [0, passes) of the whole image.
+std::unique_ptr<RenderSession> render_whole(const std::shared_ptr<const RenderScene>& scene, uint32_t passes) {
+  auto one = std::make_unique<RenderSession>(2);
+  one->set_scene(scene, some_aovs());
+  for (uint32_t p = 0; p < passes; ++p) EXPECT_TRUE(one->render_pass());
+  return one;
+}
+
+// The merged film holds the one render's raw state, image and line opacity.
+void expect_same_film(const Film& one, const Film& merged, const std::string& label = {}) {
+  EXPECT_EQ(film_difference(one, merged, {0, 0, one.width(), one.height()}), "") << label;
+  EXPECT_EQ(one.resolve().pixels, merged.resolve().pixels) << label;
+  EXPECT_EQ(one.resolve_aov(Aov::outline).pixels, merged.resolve_aov(Aov::outline).pixels) << label;
+}
+
 TEST(SliceRender, SlicesAddUpToTheFilmOfOneRender) {
   for (const bool adaptive : {true, false}) {
     SceneDesc d = outlined_box(40, 30);
     d.outlines.adaptive = adaptive;
     const CompileResult c = compile_scene(d);
     ASSERT_TRUE(c.scene);
-    RenderSession one(2);
-    one.set_scene(c.scene, some_aovs());
-    for (int p = 0; p < 40; ++p) ASSERT_TRUE(one.render_pass());
-    ASSERT_TRUE(one.film().has_lines());
+    const auto one = render_whole(c.scene, 40);
+    ASSERT_TRUE(one->film().has_lines());
 
     // Cut inside the probes, while pixels near lines decide, and after.
     Film merged(40, 30, some_aovs(), true);
@@ -84,9 +99,7 @@ TEST(SliceRender, SlicesAddUpToTheFilmOfOneRender) {
     render_slice(c.scene, 3, 11, {}, merged);
     render_slice(c.scene, 11, 29, {}, merged);
     render_slice(c.scene, 29, 40, {}, merged);
-    EXPECT_EQ(film_difference(one.film(), merged, {0, 0, 40, 30}), "") << "adaptive " << adaptive;
-    EXPECT_EQ(one.film().resolve().pixels, merged.resolve().pixels);
-    EXPECT_EQ(one.film().resolve_aov(Aov::outline).pixels, merged.resolve_aov(Aov::outline).pixels);
+    expect_same_film(one->film(), merged, adaptive ? "adaptive" : "full sampling");
   }
 }
 
@@ -95,16 +108,12 @@ TEST(SliceRender, SlicesAddUpToTheFilmOfOneRender) {
 TEST(SliceRender, SlicesOfALargerImageAddUpToTheFilmOfOneRender) {
   const CompileResult c = compile_scene(outlined_box(96, 96));
   ASSERT_TRUE(c.scene);
-  RenderSession one(2);
-  one.set_scene(c.scene, some_aovs());
-  for (int p = 0; p < 24; ++p) ASSERT_TRUE(one.render_pass());
+  const auto one = render_whole(c.scene, 24);
   Film merged(96, 96, some_aovs(), true);
   render_slice(c.scene, 0, 5, {}, merged);
   render_slice(c.scene, 5, 13, {}, merged);
   render_slice(c.scene, 13, 24, {}, merged);
-  EXPECT_EQ(film_difference(one.film(), merged, {0, 0, 96, 96}), "");
-  EXPECT_EQ(one.film().resolve().pixels, merged.resolve().pixels);
-  EXPECT_EQ(one.film().resolve_aov(Aov::outline).pixels, merged.resolve_aov(Aov::outline).pixels);
+  expect_same_film(one->film(), merged);
 }
 
 // Slices that read the decisions made once (decide_lines) instead of tracing them
@@ -124,13 +133,11 @@ TEST(SliceRender, SlicesReadingTheLineDecisionsAddUpToTheFilmOfOneRender) {
                           [](LineKind k) { return k == LineKind::edge; }));
   EXPECT_TRUE(std::any_of(decided.kinds.begin(), decided.kinds.end(),
                           [](LineKind k) { return k == LineKind::quiet; }));
-  RenderSession one(2);
-  one.set_scene(c.scene, some_aovs());
   const uint32_t passes = decided.decided_at + 14;
-  for (uint32_t p = 0; p < passes; ++p) ASSERT_TRUE(one.render_pass());
+  const auto one = render_whole(c.scene, passes);
   // The session that made them renders from pass 0 as a fresh one does.
   for (uint32_t p = 0; p < passes; ++p) ASSERT_TRUE(maker.render_pass());
-  EXPECT_EQ(film_difference(one.film(), maker.film(), {0, 0, 64, 48}), "");
+  EXPECT_EQ(film_difference(one->film(), maker.film(), {0, 0, 64, 48}), "");
 
   const uint32_t cut = decided.decided_at + 3;
   Film merged(64, 48, some_aovs(), true);
@@ -139,16 +146,13 @@ TEST(SliceRender, SlicesReadingTheLineDecisionsAddUpToTheFilmOfOneRender) {
   render_slice(c.scene, cut, cut + 5, {}, merged, &decided);
   render_slice(c.scene, cut + 5, passes, {0, 0, 64, 20}, merged, &decided);
   render_slice(c.scene, cut + 5, passes, {0, 20, 64, 48}, merged, &decided);
-  EXPECT_EQ(film_difference(one.film(), merged, {0, 0, 64, 48}), "");
-  EXPECT_EQ(one.film().resolve_aov(Aov::outline).pixels, merged.resolve_aov(Aov::outline).pixels);
+  expect_same_film(one->film(), merged);
 }
 
 TEST(SliceRender, CropWindowsAddUpToTheFilmOfOneRender) {
   const CompileResult c = compile_scene(outlined_box(40, 30));
   ASSERT_TRUE(c.scene);
-  RenderSession one(2);
-  one.set_scene(c.scene, some_aovs());
-  for (int p = 0; p < 24; ++p) ASSERT_TRUE(one.render_pass());
+  const auto one = render_whole(c.scene, 24);
 
   // Windows across tile borders; each line map reads the probes around its window.
   Film merged(40, 30, some_aovs(), true);
@@ -157,8 +161,7 @@ TEST(SliceRender, CropWindowsAddUpToTheFilmOfOneRender) {
     render_slice(c.scene, 0, 9, w, merged);
     render_slice(c.scene, 9, 24, w, merged);
   }
-  EXPECT_EQ(film_difference(one.film(), merged, {0, 0, 40, 30}), "");
-  EXPECT_EQ(one.film().resolve().pixels, merged.resolve().pixels);
+  expect_same_film(one->film(), merged);
 }
 
 // A checkpoint written when the time limit cut a pass holds that pass's finished
