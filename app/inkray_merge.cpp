@@ -2,6 +2,7 @@
 // image one machine would have rendered, or to a partial again.
 #include "core/document/animation.h"
 #include "core/document/json_io.h"
+#include "core/film/denoise.h"
 #include "core/film/film_partial.h"
 #include "core/film/partial_merge.h"
 #include "core/image/image_io.h"
@@ -11,6 +12,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,9 @@ must hold one window with one range of samples for all its pixels.
 
   --aov NAME=FILE       also write an AOV (see inkray-render --help); its sums must be in the
                         partials (inkray-render --aov NAME); may be repeated
+  --denoise             write OUT denoised and the image as merged beside it as OUT_raw.EXT; the
+                        partials must keep the denoiser's features (inkray-render --samples with
+                        --denoise)
   --threads N           worker threads for the painterly filter (default: one per hardware thread)
   -q, --quiet           print nothing on success
   -h, --help            this text
@@ -46,6 +51,7 @@ struct MergeOptions {
   std::vector<fs::path> partials;
   std::vector<AovFile> aovs;
   int threads = 0;
+  bool denoise = false;
   bool quiet = false;
   bool help = false;
 };
@@ -75,6 +81,8 @@ std::optional<MergeOptions> parse(int argc, char** argv, std::string* error) {
       return o;
     } else if (arg == "-q" || arg == "--quiet") {
       o.quiet = true;
+    } else if (arg == "--denoise") {
+      o.denoise = true;
     } else if (arg == "--threads") {
       const auto v = value();
       if (!v) return std::nullopt;
@@ -109,11 +117,13 @@ std::optional<MergeOptions> parse(int argc, char** argv, std::string* error) {
         "--help)";
     return std::nullopt;
   }
-  if (writes_partial(o.output) && !o.aovs.empty()) {
-    *error = "--aov: a partial output keeps the partials' AOV sums; name AOV files when merging to an image";
+  if (writes_partial(o.output) && (!o.aovs.empty() || o.denoise)) {
+    *error = std::string(o.denoise ? "--denoise" : "--aov") +
+             ": a partial output keeps the partials' sums; give it when merging to an image";
     return std::nullopt;
   }
   std::vector<PlannedOutput> outputs = {{o.output.string(), o.output}};
+  if (o.denoise) outputs.push_back({"--denoise's raw image " + raw_image_path(o.output).string(), raw_image_path(o.output)});
   for (const AovFile& a : o.aovs)
     outputs.push_back({"--aov " + std::string(kAovNames[size_t(a.aov)]) + "=" + a.file.string(), a.file});
   for (const auto& planned : outputs)
@@ -144,6 +154,7 @@ int run(const MergeOptions& opt) {
     return 1;
   }
   const PartialInfo& info = merged.info;
+  std::optional<Denoised> denoised;
   if (partial) {
     if (!write_partial_file(*merged.film, info, opt.output, &error)) {
       std::fprintf(stderr, "error: %s\n", error.c_str());
@@ -157,6 +168,13 @@ int run(const MergeOptions& opt) {
                      std::string(kAovNames[size_t(a.aov)]).c_str());
         return 1;
       }
+    if (opt.denoise && (info.aovs.bits & denoise_aovs().bits) != denoise_aovs().bits) {
+      std::fprintf(stderr,
+                   "error: %s: the partials hold none of the denoiser's features (render them with --samples "
+                   "and --denoise)\n",
+                   opt.partials.front().c_str());
+      return 1;
+    }
     // The settings the render resolved with: the scene the partials carry, at their frame.
     SceneLoadResult scene = parse_scene(info.scene, opt.partials.front().parent_path(),
                                         opt.partials.front().string() + ": inkray.scene", ReadFor::editing);
@@ -171,8 +189,9 @@ int run(const MergeOptions& opt) {
     SceneDesc desc = std::move(*scene.scene);
     if (!desc.animation.empty()) desc = scene_at_frame(desc, desc.render.frame);
     ThreadBudget pool(opt.threads);
-    switch (
-        write_film_outputs(*merged.film, desc.render, desc.outlines, opt.output, opt.aovs, &error, &pool)) {
+    if (opt.denoise) denoised = denoise(*merged.film, &pool);
+    switch (write_film_outputs(*merged.film, desc.render, desc.outlines, opt.output, opt.aovs, &error, &pool, {},
+                               {}, denoised ? &denoised->image : nullptr)) {
       case OutputsWritten::all:
         break;
       case OutputsWritten::cancelled:
@@ -190,6 +209,7 @@ int run(const MergeOptions& opt) {
       std::printf("%u-%u spp", merged.min_samples, merged.max_samples);
     if (partial) std::printf(", partial: %s", describe_partial(info).c_str());
     if (info.nonfinite) std::printf(", %llu non-finite samples dropped", (unsigned long long)info.nonfinite);
+    if (denoised) std::printf(", denoised: estimated rel. error %.5f", denoised->relative_error);
     std::printf("\n");
   }
   return 0;

@@ -3,6 +3,7 @@
 #include "core/compiler/compile.h"
 #include "core/document/graph_reference.h"
 #include "core/document/json_io.h"
+#include "core/film/denoise.h"
 #include "core/film/film_partial.h"
 #include "core/film/line_decisions_file.h"
 #include "core/film/partial_merge.h"
@@ -209,6 +210,7 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
 
   AovSet aovs;
   for (const auto& a : opt.aovs) aovs.add(*aov_from_name(a.name));
+  if (opt.denoise) aovs.bits |= denoise_aovs().bits;
   RenderSession& session = r.session;
   session.set_scene(compiled.scene, aovs);
   const PixelWindow whole{0, 0, desc.render.width, desc.render.height};
@@ -248,6 +250,9 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
   } else {
     session.continue_from(first, first, {}, decided);
   }
+
+  if (opt.noise_threshold)
+    session.set_adaptive({*opt.noise_threshold, uint32_t(opt.min_spp.value_or(16))});
 
   // The render gets what reading and building left of the time, less what the painterly
   // filter will need after it.
@@ -291,6 +296,8 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
   if (session.stats().spp == 0) return out_of_time(time_limit, "rendering the first sample of every pixel");
 
   std::string error;
+  double denoise_seconds = 0.0;
+  std::optional<Denoised> denoised;
   if (partial) {
     if (!complete) {
       std::fprintf(stderr,
@@ -305,9 +312,15 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
       return 1;
     }
   } else {
+    if (opt.denoise) {
+      const auto t0 = Cancel::Clock::now();
+      denoised = denoise(session.film(), &session.pool(), deadline);
+      if (denoised->image.pixels.empty()) return out_of_time(time_limit, "denoising");
+      denoise_seconds = seconds_since(t0);
+    }
     // Every output is staged before any is replaced: a failed AOV leaves no image behind.
     switch (write_render_outputs(session, files.output, files.aovs, &error, deadline,
-                                 opt.crop ? window : PixelWindow{})) {
+                                 opt.crop ? window : PixelWindow{}, denoised ? &denoised->image : nullptr)) {
       case OutputsWritten::all:
         break;
       case OutputsWritten::cancelled:
@@ -338,6 +351,14 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
   if (s.nonfinite_samples)
     std::printf(", %llu non-finite samples dropped", (unsigned long long)s.nonfinite_samples);
   std::printf("\n");
+  if (opt.noise_threshold)
+    std::printf("adaptive sampling: %u of %u tiles below %g when the render ended; %.1f samples per pixel on average\n",
+                s.tiles - s.active_tiles, s.tiles, *opt.noise_threshold,
+                double(s.paths) / (double(window.width()) * double(window.height())));
+  if (denoised)
+    std::printf("denoised in %.3f s: estimated rel. error %.5f denoised (%s), %.5f raw (%s)\n", denoise_seconds,
+                denoised->relative_error, files.output.c_str(), s.relative_error,
+                raw_image_path(files.output).c_str());
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include "core/film/film.h"
 #include "core/image/image_io.h"
 #include "core/io/output_set.h"
+#include "core/render/render_outputs.h"
 
 #include <charconv>
 #include <cmath>
@@ -31,10 +32,18 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
   --width W --height H  override the scene's resolution (the aspect ratio follows)
   --seed S              seed of every random decision (default: the scene's render.seed)
   --aov NAME=FILE       also write an AOV; may be repeated. NAME is a first-hit AOV (albedo, normal,
-                        depth, object_id, material_id) or an outline opacity: outline (all line
+                        depth, object_id, material_id, toon_band) or an outline opacity: outline (all line
                         types) or outline_depth, outline_crease, outline_intersection,
                         outline_material, outline_object, outline_silhouette (one type each).
                         With --samples, --aov NAME keeps the AOV's sums in the partial
+  --denoise             write -o denoised (lines, ids and toon bands stay crisp) and the image as
+                        rendered beside it as OUT_raw.EXT; prints the denoised image's estimated
+                        error. With --samples, the partial keeps the denoiser's features for
+                        inkray-merge --denoise
+  --noise-threshold E   adaptive sampling: a 16x16 tile whose estimated relative error (smoothed
+                        over its neighbours) is below E stops taking samples; the others go on up
+                        to --spp, within --time
+  --min-spp N           samples every pixel takes before adaptive sampling may stop it (default 16)
   --write-scene FILE    read and check the scene, write it as the editor saves it (every
                         parameter, asset paths relative to FILE's folder) and exit without
                         rendering; upgrades and normalises scene files
@@ -214,6 +223,19 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       o.write_scene = std::string(*v);
     } else if (arg == "--spp") {
       if (!int_option(i, arg, 1, 1 << 20, &o.spp)) return std::nullopt;
+    } else if (arg == "--denoise") {
+      o.denoise = true;
+    } else if (arg == "--noise-threshold") {
+      const auto v = value_of(i, arg);
+      if (!v) return std::nullopt;
+      double t = 0.0;
+      if (!parse_number(*v, &t) || !(t > 0.0) || t > 10.0) {
+        *error = "--noise-threshold: expected a relative error in (0, 10], e.g. 0.01, got \"" + std::string(*v) + "\"";
+        return std::nullopt;
+      }
+      o.noise_threshold = t;
+    } else if (arg == "--min-spp") {
+      if (!int_option(i, arg, 2, 1 << 20, &o.min_spp)) return std::nullopt;
     } else if (arg == "--threads") {
       if (!int_option(i, arg, 1, 1024, &o.threads)) return std::nullopt;
     } else if (arg == "--width") {
@@ -350,7 +372,16 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
     *error = "no output file given: add -o OUT.png (or .pfm, .exr)";
     return std::nullopt;
   }
+  if (o.min_spp && !o.noise_threshold) {
+    *error = "--min-spp is the floor of adaptive sampling: add --noise-threshold";
+    return std::nullopt;
+  }
   if (o.samples) {
+    if (o.noise_threshold) {
+      *error = "--noise-threshold decides from all of a pixel's samples; a slice (--samples) has only some of "
+               "them: adaptive sampling is for renders on one machine";
+      return std::nullopt;
+    }
     if (o.spp) {
       *error = "--samples A B says which samples to render: leave out --spp";
       return std::nullopt;
@@ -395,6 +426,9 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
   // (for frames, as the first frame names them: the folders are those of every frame).
   const int frame = o.frames && !o.frames->all ? o.frames->first : 0;
   std::vector<PlannedOutput> outputs = {{"-o " + o.output.string(), expand_frame_pattern(o.output, frame)}};
+  if (o.denoise && !o.samples)
+    outputs.push_back({"--denoise's raw image " + raw_image_path(o.output).string(),
+                       expand_frame_pattern(raw_image_path(o.output), frame)});
   for (const auto& a : o.aovs)
     if (!a.file.empty())
       outputs.push_back({"--aov " + a.name + "=" + a.file.string(), expand_frame_pattern(a.file, frame)});

@@ -38,6 +38,11 @@ struct RenderCliOptions {
   // --line-decisions FILE: a slice reads them (docs/final-renders.md, "Line decisions").
   std::filesystem::path decide_lines, line_decisions;
   bool resume = false;
+  bool denoise = false;  // --denoise: -o is denoised, the raw image goes beside it (raw_image_path)
+  // --noise-threshold: tiles whose estimated relative error is below it stop taking samples
+  // once they have --min-spp (docs/architecture.md, "Adaptive sampling").
+  std::optional<double> noise_threshold;
+  std::optional<int> min_spp;
   std::optional<FrameRange> frames;
   bool quiet = false;
   bool help = false;

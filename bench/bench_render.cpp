@@ -8,6 +8,7 @@
 #include "core/sampling/warp.h"
 #include "core/math/frame.h"
 #include "core/compiler/compile.h"
+#include "core/film/denoise.h"
 #include "core/document/json_io.h"
 
 #include <sys/resource.h>
@@ -31,6 +32,8 @@ struct Options {
   int reference_spp = 8192;
   std::filesystem::path cache = "bench/cache";
   bool scaling = true;
+  bool denoise = false;         // --denoise: also the denoised image's error at every checkpoint
+  double adaptive = 0.0;        // --adaptive E: adaptive sampling at threshold E
 };
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -153,23 +156,76 @@ int run(const Options& opt) {
   const RgbImage reference = reference_image(opt, compile_scene(ref_desc).scene);
 
   RenderSession session(opt.threads);
-  session.set_scene(compiled.scene);
-  std::printf("\n%10s %8s %12s %12s %14s %14s %12s\n", "seconds", "spp", "Mpaths/s", "Mrays/s", "RMSE display",
+  session.set_scene(compiled.scene, opt.denoise ? denoise_aovs() : AovSet{});
+  if (opt.adaptive > 0.0) session.set_adaptive({opt.adaptive, 16});
+  const double pixels = double(desc.render.width) * double(desc.render.height);
+  std::printf("\n%10s %8s %12s %12s %14s %14s %12s", "seconds", "spp", "Mpaths/s", "Mrays/s", "RMSE display",
               "RMSE linear", "est. error");
-  double next_checkpoint = 0.25;
-  while (session.stats().elapsed_seconds < opt.seconds) {
+  if (opt.denoise)
+    std::printf(" %10s %14s %14s %12s %14s %14s", "denoise s", "RMSE disp. dn", "RMSE lin. dn", "est. dn",
+                "edge RMSE raw", "edge RMSE dn");
+  std::printf("\n");
+  // Pixels within 2 of an object id edge (of the reference's first hits): where a
+  // denoiser that blurred across ids would show.
+  std::vector<uint8_t> near_edge;
+  if (opt.denoise) {
+    RenderSession ids(opt.threads);
+    AovSet a;
+    a.add(Aov::object_id);
+    ids.set_scene(compiled.scene, a);
+    ids.render_pass();
+    const RgbImage id = ids.film().resolve_aov(Aov::object_id);
+    const int w = id.width, h = id.height;
+    near_edge.assign(size_t(w) * size_t(h), 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int dy = -2; dy <= 2; ++dy)
+          for (int dx = -2; dx <= 2; ++dx) {
+            const int qx = std::clamp(x + dx, 0, w - 1), qy = std::clamp(y + dy, 0, h - 1);
+            if (id.at(qx, qy).x != id.at(x, y).x) near_edge[size_t(y) * size_t(w) + size_t(x)] = 1;
+          }
+  }
+  const auto edge_rmse = [&](const RgbImage& img) {
+    double sum = 0.0, n = 0.0;
+    for (size_t i = 0; i < img.pixels.size(); ++i) {
+      if (!near_edge[i]) continue;
+      for (int c = 0; c < 3; ++c) {
+        const double d = double(linear_to_srgb(std::clamp(img.pixels[i][c], 0.f, 1.f))) -
+                         double(linear_to_srgb(std::clamp(reference.pixels[i][c], 0.f, 1.f)));
+        sum += d * d;
+      }
+      n += 3.0;
+    }
+    return n > 0.0 ? std::sqrt(sum / n) : 0.0;
+  };
+  double next_checkpoint = 0.25, last_denoise = 0.0;
+  while (session.stats().elapsed_seconds < opt.seconds && !session.converged()) {
     session.render_pass();
     const RenderStats& s = session.stats();
-    if (s.elapsed_seconds >= next_checkpoint || s.elapsed_seconds >= opt.seconds) {
+    if (s.elapsed_seconds >= next_checkpoint || s.elapsed_seconds >= opt.seconds || session.converged()) {
       const RgbImage img = session.film().resolve();
-      std::printf("%10.2f %8u %12.3f %12.3f %14.5f %14.5f %12.5f\n", s.elapsed_seconds, s.spp,
+      std::printf("%10.2f %8.1f %12.3f %12.3f %14.5f %14.5f %12.5f", s.elapsed_seconds, double(s.paths) / pixels,
                   double(s.paths) / s.elapsed_seconds * 1e-6, double(s.rays) / s.elapsed_seconds * 1e-6,
                   rmse_display(img, reference), rmse_linear(img, reference), s.relative_error);
+      if (opt.denoise) {
+        const auto t0 = Clock::now();
+        const Denoised d = denoise(session.film(), &session.pool());
+        last_denoise = seconds_since(t0);
+        std::printf(" %10.3f %14.5f %14.5f %12.5f %14.5f %14.5f", last_denoise, rmse_display(d.image, reference),
+                    rmse_linear(d.image, reference), d.relative_error, edge_rmse(img), edge_rmse(d.image));
+      }
+      std::printf("\n");
       std::fflush(stdout);
       while (next_checkpoint <= s.elapsed_seconds) next_checkpoint *= 2.0;
     }
   }
   const RenderStats& s = session.stats();
+  if (opt.adaptive > 0.0)
+    std::printf("adaptive sampling at %g: %u of %u tiles stopped, %.1f samples per pixel on average\n", opt.adaptive,
+                s.tiles - s.active_tiles, s.tiles, double(s.paths) / pixels);
+  if (opt.denoise)
+    std::printf("denoiser: %.3f s for %.2f Mpixels on %d threads: %.3f s per Mpixel\n", last_denoise, pixels * 1e-6,
+                session.threads(), last_denoise / (pixels * 1e-6));
   const double full_rate = double(s.rays) / s.elapsed_seconds;
   const double bare_rate = bare_embree_rate(*compiled.scene, opt.threads, 3.0);
   std::printf("\nray rate: full shading %.3f Mrays/s, bare Embree %.3f Mrays/s (%.0f%%)\n", full_rate * 1e-6,
@@ -209,10 +265,12 @@ int main(int argc, char** argv) {
     else if (a == "--reference-spp") opt.reference_spp = std::atoi(next());
     else if (a == "--cache") opt.cache = next();
     else if (a == "--no-scaling") opt.scaling = false;
+    else if (a == "--denoise") opt.denoise = true;
+    else if (a == "--adaptive") opt.adaptive = std::atof(next());
     else if (a == "-h" || a == "--help") {
       std::printf(
           "usage: inkray-bench [SCENE.json] [--time S] [--threads N] [--reference-spp N] [--cache DIR] "
-          "[--no-scaling]\n");
+          "[--no-scaling] [--denoise] [--adaptive E]\n");
       return 0;
     } else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "unknown option %s\n", a.c_str());

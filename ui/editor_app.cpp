@@ -40,11 +40,6 @@ int viewport_threads(int requested) {
   return std::max(1, int(std::thread::hardware_concurrency()) - 1);
 }
 
-bool operator_equal(const ViewportView& a, const ViewportView& b) {
-  return a.display == b.display && a.encoding.exposure == b.encoding.exposure &&
-         a.encoding.transform == b.encoding.transform && a.highlight_object == b.highlight_object;
-}
-
 }  // namespace
 
 // Scripted input for tests: the keys and mouse GLFW's callbacks would deliver, one
@@ -708,7 +703,7 @@ void EditorApp::dialogs() {
 void EditorApp::sync_renderer() {
   state_.selection = validated(state_.document.scene(), state_.selection);
   state_.view.highlight_object = state_.selection.kind == ItemKind::object ? state_.selection.index : -1;
-  if (first_sync_ || !operator_equal(state_.view, sent_view_)) {
+  if (first_sync_ || !(state_.view == sent_view_)) {
     renderer_.set_view(sent_view_ = state_.view);
     view_sent_time_ = std::chrono::steady_clock::now();
   }
@@ -763,6 +758,9 @@ void EditorApp::poll_background() {
                   s->stats.spp, s->stats.elapsed_seconds,
                   s->stats.elapsed_seconds > 0 ? double(s->stats.rays) / s->stats.elapsed_seconds * 1e-6 : 0.0,
                   s->stats.relative_error * 100.0);
+    if (s->denoised)
+      std::snprintf(line + std::strlen(line), sizeof line - std::strlen(line), " raw, %.2f%% denoised",
+                    s->denoised_error * 100.0);
     state_.log.info(line);
   }
   autosave_.tick(state_.document.scene(), state_.document.file(), state_.document.revision(),

@@ -211,7 +211,13 @@ void ExportUi::limits_rows() {
   if (ImGui::DragFloat("##noise", &percent, 0.02f, 0.f, 50.f, percent > 0.f ? "%.2f %% error" : "none"))
     form_.noise_target = std::clamp(percent, 0.f, 50.f) / 100.f;
   ImGui::SameLine();
-  ImGui::TextDisabled("stops at the first limit met");
+  ImGui::TextDisabled("stops at the first limit met; tiles below it stop early");
+  row("Denoise");
+  ImGui::Checkbox("##denoise", &form_.denoise);
+  widget_report::item("export.denoise");
+  ImGui::SameLine();
+  ImGui::TextDisabled(form_.denoise ? "lines, ids and toon bands stay crisp; the raw image is written as _raw too"
+                                    : "off: the image as rendered");
 }
 
 void ExportUi::resolution_row() {
@@ -294,7 +300,11 @@ void ExportUi::draw_progress() {
         std::snprintf(error, sizeof error, " (target %.2f %%)", e->request.noise_target * 100.0);
         error_text += error;
       }
-      figure("Noise", error_text);
+      figure("Noise", error_text + " raw");
+      if (p.denoised_error > 0.0) {
+        std::snprintf(error, sizeof error, "%.2f %% denoised", p.denoised_error * 100.0);
+        figure("", error);
+      }
       ImGui::EndTable();
     }
     ImGui::ProgressBar(p.fraction, ImVec2(-1.f, 0.f));

@@ -1,6 +1,7 @@
 #include "ui/export_queue.h"
 
 #include "core/image/image_io.h"
+#include "core/render/render_outputs.h"
 
 #include <algorithm>
 
@@ -54,6 +55,7 @@ ExportFormCheck check_export_form(const ExportForm& form, const fs::path& scene_
     return c;
   }
   c.files = {c.output};
+  if (form.denoise) c.files.push_back(raw_image_path(c.output));
   for (size_t i = 0; i < form.aovs.size() && i < kAovNames.size(); ++i)
     if (form.aovs[i]) c.files.push_back(ExportJob::aov_path(c.output, Aov(i)));
   for (const fs::path& f : c.files) {
@@ -81,6 +83,7 @@ ExportRequest make_export_request(const ExportForm& form, const ExportFormCheck&
   r.spp = form.spp;
   r.time_seconds = form.time_seconds;
   r.noise_target = form.noise_target;
+  r.denoise = form.denoise;
   for (size_t i = 0; i < form.aovs.size() && i < kAovNames.size(); ++i)
     if (form.aovs[i]) r.aovs.push_back(Aov(i));
   r.threads = export_threads(form.keep_viewport);

@@ -21,13 +21,14 @@ struct ExportForm {
   int spp = 256;
   float time_seconds = 0.f;    // 0: none
   float noise_target = 0.f;    // relative error (0.01 is 1%); 0: none
+  bool denoise = false;        // the image denoised, the raw one beside it
   int width = 0, height = 0;   // 0: the scene's
   bool keep_viewport = false;  // the viewport keeps one thread instead of pausing
 };
 
 struct ExportFormCheck {
   std::filesystem::path output;                 // absolute
-  std::vector<std::filesystem::path> files;     // the image, then its AOVs
+  std::vector<std::filesystem::path> files;     // the image, its raw one when denoised, then its AOVs
   std::vector<std::filesystem::path> existing;  // of files, those Start would replace
   std::string format;                           // "PNG, 8-bit sRGB", ...; empty for an unknown extension
   std::string error;                            // why Start cannot run; empty when it can

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace inkray {
@@ -88,10 +89,16 @@ void draw_problems_overlay(const std::vector<std::string>& problems, float x, fl
 void draw_stats_overlay(const ViewportSnapshot& s, float x, float y) {
   const RenderStats& st = s.stats;
   const double rays_per_s = st.elapsed_seconds > 0 ? double(st.rays) / st.elapsed_seconds : 0.0;
-  char text[256];
-  std::snprintf(text, sizeof text, "%s%u spp  %u passes  %.1f s\n%.2f Mrays/s  error %.2f%%%s",
+  char text[320];
+  std::snprintf(text, sizeof text, "%s%u spp  %u passes  %.1f s\n%.2f Mrays/s  error %.2f%% raw%s",
                 s.divisor > 1 ? "preview 1/" : "", st.spp, st.passes, st.elapsed_seconds, rays_per_s * 1e-6,
                 st.relative_error * 100.0, s.finished ? "  (done)" : "");
+  if (s.denoised)
+    std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text), "\ndenoised at %u spp: error %.2f%%",
+                  s.denoised_spp, s.denoised_error * 100.0);
+  if (st.tiles > 0 && st.active_tiles < st.tiles)
+    std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text), "\nadaptive: %u of %u tiles sampling",
+                  st.active_tiles, st.tiles);
   if (s.divisor > 1) {
     std::snprintf(text, sizeof text, "preview 1/%d  %.1f s", s.divisor, st.elapsed_seconds);
   }

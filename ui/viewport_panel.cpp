@@ -113,6 +113,11 @@ void ViewportPanel::toolbar(EditorState& state) {
     ImGui::EndCombo();
   }
   widget_report::item("viewport.view_transform");
+  flow.next(checkbox_width("Denoise"));
+  ImGui::Checkbox("Denoise", &state.view.denoise);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Denoise the final image (lines, ids and toon bands stay crisp); the samples so far stay");
+  widget_report::item("viewport.denoise");
   const char* pause = state.paused ? "Resume" : "Pause";
   flow.next(button_width(pause));
   if (ImGui::Button(pause)) state.paused = !state.paused;

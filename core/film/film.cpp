@@ -65,9 +65,11 @@ Film::Film(int width, int height, AovSet aovs, bool lines) : width_(width), heig
   if (aovs.has(Aov::albedo)) albedo_sum_.assign(n, glm::dvec3(0.0));
   if (aovs.has(Aov::normal)) normal_sum_.assign(n, glm::dvec3(0.0));
   if (aovs.has(Aov::depth)) depth_sum_.assign(n, 0.0);
-  if (aovs.has(Aov::albedo) || aovs.has(Aov::normal) || aovs.has(Aov::depth)) hit_count_.assign(n, 0);
+  if (aovs.has(Aov::toon_band)) band_sum_.assign(n, 0.0);
+  if (aovs.averages_hits()) hit_count_.assign(n, 0);
   if (aovs.has(Aov::object_id)) object_id_.assign(n, -2);
   if (aovs.has(Aov::material_id)) material_id_.assign(n, -2);
+  if (aovs.has(Aov::object_id) || aovs.has(Aov::material_id)) ids_mixed_.assign(n, 0);
   if (lines) {
     line_sum_.assign(n, LineSums{});
     line_count_.assign(n, 0);
@@ -81,9 +83,11 @@ void Film::clear() {
   albedo_sum_ = std::move(fresh.albedo_sum_);
   normal_sum_ = std::move(fresh.normal_sum_);
   depth_sum_ = std::move(fresh.depth_sum_);
+  band_sum_ = std::move(fresh.band_sum_);
   hit_count_ = std::move(fresh.hit_count_);
   object_id_ = std::move(fresh.object_id_);
   material_id_ = std::move(fresh.material_id_);
+  ids_mixed_ = std::move(fresh.ids_mixed_);
   line_sum_ = std::move(fresh.line_sum_);
   line_count_ = std::move(fresh.line_count_);
   nonfinite_ = 0;
@@ -100,9 +104,11 @@ void Film::clear_region(int x0, int y0, int x1, int y1) {
       if (!albedo_sum_.empty()) albedo_sum_[i] = glm::dvec3(0.0);
       if (!normal_sum_.empty()) normal_sum_[i] = glm::dvec3(0.0);
       if (!depth_sum_.empty()) depth_sum_[i] = 0.0;
+      if (!band_sum_.empty()) band_sum_[i] = 0.0;
       if (!hit_count_.empty()) hit_count_[i] = 0;
       if (!object_id_.empty()) object_id_[i] = -2;
       if (!material_id_.empty()) material_id_[i] = -2;
+      if (!ids_mixed_.empty()) ids_mixed_[i] = 0;
       if (!line_sum_.empty()) {
         line_sum_[i] = LineSums{};
         line_count_[i] = 0;
@@ -121,9 +127,11 @@ FilmPixel Film::pixel(int x, int y) const {
   if (!albedo_sum_.empty()) p.albedo_sum = albedo_sum_[i];
   if (!normal_sum_.empty()) p.normal_sum = normal_sum_[i];
   if (!depth_sum_.empty()) p.depth_sum = depth_sum_[i];
+  if (!band_sum_.empty()) p.band_sum = band_sum_[i];
   if (!hit_count_.empty()) p.hit_count = hit_count_[i];
   if (!object_id_.empty()) p.object_id = object_id_[i];
   if (!material_id_.empty()) p.material_id = material_id_[i];
+  if (!ids_mixed_.empty()) p.ids_mixed = ids_mixed_[i];
   if (!line_sum_.empty()) {
     p.lines = line_sum_[i];
     p.line_count = line_count_[i];
@@ -140,7 +148,15 @@ void Film::add_pixel(int x, int y, const FilmPixel& p) {
   if (!albedo_sum_.empty()) albedo_sum_[i] += p.albedo_sum;
   if (!normal_sum_.empty()) normal_sum_[i] += p.normal_sum;
   if (!depth_sum_.empty()) depth_sum_[i] += p.depth_sum;
+  if (!band_sum_.empty()) band_sum_[i] += p.band_sum;
   if (!hit_count_.empty()) hit_count_[i] += p.hit_count;
+  if (!ids_mixed_.empty()) {
+    uint8_t mixed = uint8_t(ids_mixed_[i] | p.ids_mixed);
+    if (!object_id_.empty() && object_id_[i] != -2 && p.object_id != -2 && p.object_id != object_id_[i]) mixed |= 1u;
+    if (!material_id_.empty() && material_id_[i] != -2 && p.material_id != -2 && p.material_id != material_id_[i])
+      mixed |= 2u;
+    ids_mixed_[i] = mixed;
+  }
   if (!object_id_.empty() && object_id_[i] == -2) object_id_[i] = p.object_id;
   if (!material_id_.empty() && material_id_[i] == -2) material_id_[i] = p.material_id;
   if (!line_sum_.empty()) {
@@ -155,7 +171,7 @@ void Film::add_sample(int x, int y, uint32_t pass, const Color& radiance) {
     nonfinite_.fetch_add(1, std::memory_order_relaxed);
     return;
   }
-  const uint32_t half = pass & 1u;
+  const uint32_t half = half_of_pass(pass);
   ++count_[half][i];
   sum_[half][i] += glm::dvec3(radiance);
 }
@@ -163,13 +179,20 @@ void Film::add_sample(int x, int y, uint32_t pass, const Color& radiance) {
 void Film::add_first_hit(int x, int y, const FirstHit& hit) {
   const size_t i = index(x, y);
   // Ids are not averaged: the first sample's id stands for the pixel.
-  if (!object_id_.empty() && object_id_[i] == -2) object_id_[i] = hit.object;
-  if (!material_id_.empty() && material_id_[i] == -2) material_id_[i] = hit.material;
+  if (!object_id_.empty()) {
+    if (object_id_[i] == -2) object_id_[i] = hit.object;
+    else if (object_id_[i] != hit.object) ids_mixed_[i] |= 1u;
+  }
+  if (!material_id_.empty()) {
+    if (material_id_[i] == -2) material_id_[i] = hit.material;
+    else if (material_id_[i] != hit.material) ids_mixed_[i] |= 2u;
+  }
   if (hit_count_.empty() || hit.object < 0) return;
   ++hit_count_[i];
   if (!albedo_sum_.empty()) albedo_sum_[i] += glm::dvec3(hit.albedo);
   if (!normal_sum_.empty()) normal_sum_[i] += glm::dvec3(hit.normal);
   if (!depth_sum_.empty()) depth_sum_[i] += double(hit.depth);
+  if (!band_sum_.empty()) band_sum_[i] += double(hit.band);
 }
 
 void Film::add_lines(int x, int y, const LineSample& lines) {
@@ -181,6 +204,12 @@ void Film::add_lines(int x, int y, const LineSample& lines) {
 LineSample Film::line_mean(int x, int y) const {
   if (line_sum_.empty()) return {};
   return line_sum_[index(x, y)].mean();
+}
+
+double Film::half_luminance(int x, int y, int half) const {
+  const size_t i = index(x, y);
+  const uint32_t n = count_[size_t(half)][i];
+  return n ? dluminance(sum_[size_t(half)][i]) / double(n) : 0.0;
 }
 
 uint32_t Film::samples_at(int x, int y) const { return count_[0][index(x, y)] + count_[1][index(x, y)]; }
@@ -223,6 +252,7 @@ RgbImage Film::resolve_aov(Aov aov) const {
       case Aov::depth: img.pixels[i] = Color(hits > 0.0 ? float(depth_sum_[i] / hits) : 0.f); break;
       case Aov::object_id: img.pixels[i] = Color(float(object_id_[i] < -1 ? -1 : object_id_[i])); break;
       case Aov::material_id: img.pixels[i] = Color(float(material_id_[i] < -1 ? -1 : material_id_[i])); break;
+      case Aov::toon_band: img.pixels[i] = Color(hits > 0.0 ? float(band_sum_[i] / hits) : -1.f); break;
       default: break;  // outline AOVs are handled above
     }
   }

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/image/rgb_image.h"
+#include "core/math/hash.h"
 #include "core/integrator/first_hit.h"
 #include "core/npr/outlines/line_types.h"
 
@@ -23,13 +24,13 @@ namespace inkray {
 // First-hit AOVs, then the outline coverage: all types together, then one per
 // type in LineType order (debug views).
 enum class Aov {
-  albedo, normal, depth, object_id, material_id,
+  albedo, normal, depth, object_id, material_id, toon_band,
   outline, outline_depth, outline_crease, outline_intersection, outline_material, outline_object,
   outline_silhouette
 };
-inline constexpr std::array<std::string_view, 12> kAovNames = {
+inline constexpr std::array<std::string_view, 13> kAovNames = {
     "albedo",          "normal",         "depth",
-    "object_id",       "material_id",    "outline",
+    "object_id",       "material_id",    "toon_band",      "outline",
     "outline_depth",   "outline_crease", "outline_intersection",
     "outline_material", "outline_object", "outline_silhouette"};
 std::optional<Aov> aov_from_name(std::string_view name);
@@ -44,6 +45,8 @@ struct AovSet {
   bool has(Aov a) const { return bits & (1u << uint32_t(a)); }
   void add(Aov a) { bits |= 1u << uint32_t(a); }
   bool any_first_hit() const { return bits & ((1u << uint32_t(Aov::outline)) - 1u); }
+  // AOVs that are averaged over the samples that hit something.
+  bool averages_hits() const { return has(Aov::albedo) || has(Aov::normal) || has(Aov::depth) || has(Aov::toon_band); }
   AovSet first_hit() const { return {bits & ((1u << uint32_t(Aov::outline)) - 1u)}; }
 };
 
@@ -74,12 +77,23 @@ struct FilmPixel {
   std::array<glm::dvec3, 2> sum{glm::dvec3(0.0), glm::dvec3(0.0)};  // radiance of even and odd passes
   std::array<uint32_t, 2> count{};
   glm::dvec3 albedo_sum{0.0}, normal_sum{0.0};
-  double depth_sum = 0.0;
+  double depth_sum = 0.0, band_sum = 0.0;
   uint32_t hit_count = 0;
   int object_id = -2, material_id = -2;
+  // Bit 0: samples of the pixel saw more than one object; bit 1: more than one material
+  // (an anti-aliased edge: the ids above are only its first sample's).
+  uint32_t ids_mixed = 0;
   LineSums lines;
   uint32_t line_count = 0;
 };
+
+// The half-buffer a pass adds to. Passes 2k and 2k+1 are a stratified pair of the
+// Owen-scrambled Sobol set: one falls in each half of the pixel, the same half for
+// every k. Split by parity, the halves would differ at every edge for ever, and the
+// noise estimate would never fall there; so each pair's members go to the halves in
+// an order hashed from k. Each half still takes one pass of every pair, so the halves
+// are equal after an even number of passes.
+inline uint32_t half_of_pass(uint32_t pass) { return (pass ^ hash_u32(pass >> 1)) & 1u; }
 
 class Film {
  public:
@@ -108,6 +122,10 @@ class Film {
 
   uint64_t nonfinite_samples() const { return nonfinite_.load(std::memory_order_relaxed); }
   uint32_t samples_at(int x, int y) const;
+  // Samples in half-buffer `half` (0 even, 1 odd) of a pixel, and their mean luminance
+  // (0 without samples): what noise estimates read, without copying the pixel.
+  uint32_t half_count(int x, int y, int half) const { return count_[size_t(half)][index(x, y)]; }
+  double half_luminance(int x, int y, int half) const;
 
   // Mean radiance per pixel.
   RgbImage resolve() const;
@@ -135,9 +153,10 @@ class Film {
   std::array<std::vector<glm::dvec3>, 2> sum_;
   std::array<std::vector<uint32_t>, 2> count_;
   std::vector<glm::dvec3> albedo_sum_, normal_sum_;
-  std::vector<double> depth_sum_;
+  std::vector<double> depth_sum_, band_sum_;
   std::vector<uint32_t> hit_count_;
   std::vector<int> object_id_, material_id_;
+  std::vector<uint8_t> ids_mixed_;  // FilmPixel::ids_mixed; kept with either id
   std::vector<LineSums> line_sum_;
   std::vector<uint32_t> line_count_;  // samples that added to line_sum_
   std::atomic<uint64_t> nonfinite_{0};

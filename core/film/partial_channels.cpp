@@ -27,10 +27,13 @@ std::vector<PartialChannel> partial_channels(const PartialInfo& info) {
     for (int k = 0; k < 3; ++k)
       c.push_back({std::string("normal.") + xyz[k], PartialField::normal, k, PartialStored::f64});
   if (a.has(Aov::depth)) c.push_back({"depth.Z", PartialField::depth, 0, PartialStored::f64});
-  if (a.has(Aov::albedo) || a.has(Aov::normal) || a.has(Aov::depth))
+  if (a.has(Aov::toon_band)) c.push_back({"toon_band", PartialField::band, 0, PartialStored::f64});
+  if (a.averages_hits())
     c.push_back({"hits", PartialField::hits, 0, PartialStored::u32});
   if (a.has(Aov::object_id)) c.push_back({"object_id", PartialField::object_id, 0, PartialStored::i32});
   if (a.has(Aov::material_id)) c.push_back({"material_id", PartialField::material_id, 0, PartialStored::i32});
+  if (a.has(Aov::object_id) || a.has(Aov::material_id))
+    c.push_back({"ids_mixed", PartialField::ids_mixed, 0, PartialStored::u32});
   if (info.lines) {
     for (int t = 0; t < kLineTypeCount; ++t)
       c.push_back({"lines.coverage." + std::string(kLineTypeNames[size_t(t)]), PartialField::coverage, t,
@@ -67,12 +70,16 @@ double channel_value(const FilmPixel& p, PartialField f, int k) {
       return p.normal_sum[k];
     case PartialField::depth:
       return p.depth_sum;
+    case PartialField::band:
+      return p.band_sum;
     case PartialField::hits:
       return p.hit_count;
     case PartialField::object_id:
       return p.object_id;
     case PartialField::material_id:
       return p.material_id;
+    case PartialField::ids_mixed:
+      return p.ids_mixed;
     case PartialField::coverage:
       return p.lines.coverage[size_t(k)];
     case PartialField::weight:
@@ -116,6 +123,9 @@ void set_channel_value(FilmPixel& p, PartialField f, int k, double v) {
     case PartialField::depth:
       p.depth_sum = v;
       break;
+    case PartialField::band:
+      p.band_sum = v;
+      break;
     case PartialField::hits:
       p.hit_count = uint32_t(v);
       break;
@@ -124,6 +134,9 @@ void set_channel_value(FilmPixel& p, PartialField f, int k, double v) {
       break;
     case PartialField::material_id:
       p.material_id = int(v);
+      break;
+    case PartialField::ids_mixed:
+      p.ids_mixed = uint32_t(v);
       break;
     case PartialField::coverage:
       p.lines.coverage[size_t(k)] = v;

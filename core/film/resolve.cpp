@@ -28,6 +28,11 @@ RgbImage resolve_base(const Film& film, const RenderSettings& settings, ThreadBu
   return apply_painterly(film.resolve(), settings, pool, cancel, film.height());
 }
 
+RgbImage resolve_base(RgbImage radiance, const RenderSettings& settings, int full_height, ThreadBudget* pool,
+                      const Cancel& cancel) {
+  return apply_painterly(std::move(radiance), settings, pool, cancel, full_height);
+}
+
 bool same_base(const RenderSettings& a, const RenderSettings& b) {
   if (a.painterly != b.painterly) return false;
   return a.painterly == PainterlyFilter::none ||
@@ -77,6 +82,14 @@ RgbImage resolve_final(const Film& film, const RenderSettings& settings, const O
                        const DisplayEncoding& display, ThreadBudget* pool, const Cancel& cancel) {
   RgbImage image = resolve_base(film, settings, pool, cancel);
   if (!image.pixels.empty()) composite_lines(gather_lines(film), outlines, display, image);  // else cut short
+  return image;
+}
+
+RgbImage resolve_final(const Film& film, RgbImage radiance, const RenderSettings& settings,
+                       const OutlineDesc& outlines, const DisplayEncoding& display, ThreadBudget* pool,
+                       const Cancel& cancel) {
+  RgbImage image = resolve_base(std::move(radiance), settings, film.height(), pool, cancel);
+  if (!image.pixels.empty()) composite_lines(gather_lines(film), outlines, display, image);
   return image;
 }
 

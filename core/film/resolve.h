@@ -26,6 +26,10 @@ namespace inkray {
 // is an empty image.
 RgbImage resolve_base(const Film& film, const RenderSettings& settings, ThreadBudget* pool = nullptr,
                       const Cancel& cancel = {});
+// The same over a mean-radiance image of the film other than its own mean (the
+// denoiser's, core/film/denoise.h); `full_height` scales the filter as the film's height does.
+RgbImage resolve_base(RgbImage radiance, const RenderSettings& settings, int full_height, ThreadBudget* pool = nullptr,
+                      const Cancel& cancel = {});
 // Whether resolve_base gives one film the same image under both settings, so a
 // cached one serves (only line settings changed).
 bool same_base(const RenderSettings& a, const RenderSettings& b);
@@ -53,6 +57,10 @@ void composite_lines(const FilmLines& lines, const OutlineDesc& outlines, const 
 RgbImage resolve_final(const Film& film, const RenderSettings& settings, const OutlineDesc& outlines,
                        const DisplayEncoding& display = {}, ThreadBudget* pool = nullptr,
                        const Cancel& cancel = {});
+// resolve_final with `radiance` in place of the film's mean: the lines still come from the film.
+RgbImage resolve_final(const Film& film, RgbImage radiance, const RenderSettings& settings,
+                       const OutlineDesc& outlines, const DisplayEncoding& display = {},
+                       ThreadBudget* pool = nullptr, const Cancel& cancel = {});
 // Seconds the painterly filter will take on a width x height image, timed on a
 // 64 x 64 crop and scaled by the pixel count; 0 without a filter. A final render
 // with a time limit stops early enough to leave it this time.

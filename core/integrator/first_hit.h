@@ -14,6 +14,11 @@ struct FirstHit {
   float depth = 0.f;  // distance along the camera's forward axis
   int object = -1;    // -1 where the sample escaped
   int material = -1;
+  // A toon surface's hard features where the camera sees it directly or through
+  // mirrors and glass: its quantised light level in [0, 1] (toon_band_level), plus 2
+  // inside the specular band and 4 inside the rim. -1 elsewhere. The denoiser
+  // never blurs across a change of it (docs/architecture.md, "Denoising").
+  float band = -1.f;
 };
 
 }  // namespace inkray

@@ -151,6 +151,7 @@ bool shade_toon(const RenderScene& scene, const Sampler& sampler, const Bounce& 
   const ToonHit th{&b.si, b.wo, b.ns, b.ref, st.path_length, b.depth};
   const ToonShade shade = toon_shade(scene, toon, th, sampler, &result.rays);
   result.radiance += st.beta * shade.radiance;
+  if (st.specular_chain && result.band < 0.f) result.band = shade.band;
   // Indirect light adds to the bands; the light the bands show is not gathered again.
   if (!st.specular_chain || !toon.receive_indirect || b.depth >= scene.settings.max_depth) return false;
   const Frame frame = Frame::from_z(b.ns);
@@ -247,6 +248,7 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
         material);
     if (!go_on) break;
   }
+  if (first_hit) first_hit->band = result.band;
   return result;
 }
 

@@ -13,6 +13,7 @@ namespace inkray {
 struct PathResult {
   Color radiance{0.f};
   uint32_t rays = 0;  // traced rays (camera, bounce and shadow), for statistics
+  float band = -1.f;  // FirstHit::band of the first toon surface along the camera's specular chain
 };
 
 // The sample pair whose x picks a mix's side at the camera ray's hit. Line

@@ -168,6 +168,9 @@ ToonShade toon_shade(const RenderScene& scene, const ToonMaterial& m, const Toon
   in.ramp_v = ramp_v(m, hit);
   const Color base = si.color * texture_eval(m.color, si.uv);
   Color out = toon_base_color(m, base, in);
+  // A ramp has no hard steps in its level; bands do.
+  const bool banded = !m.ramp_image && !(m.ramp && !m.ramp->empty());
+  float band = banded ? toon_band_level(m, glm::clamp(in.level, 0.f, 1.f)) : 0.f;
 
   if (m.specular && reference_max > 0.f) {
     float coverage = 0.f;
@@ -179,11 +182,14 @@ ToonShade toon_shade(const RenderScene& scene, const ToonMaterial& m, const Toon
           coverage, toon_specular_coverage(m, glm::dot(hit.ns, h), luminance(t.reference) / reference_max));
     }
     out += coverage * m.specular_color;
+    band += 2.f * coverage;
   }
   // The rim is not modulated by the light level: it is a stylised back light that
   // separates a shape from what is behind it, which matters most on the dark side.
-  out += toon_rim_coverage(m, glm::dot(hit.ns, hit.wo)) * m.rim_color;
-  return {is_finite(out) ? out : Color(0.f), reference_max};
+  const float rim = toon_rim_coverage(m, glm::dot(hit.ns, hit.wo));
+  out += rim * m.rim_color;
+  band += 4.f * rim;
+  return {is_finite(out) ? out : Color(0.f), reference_max, band};
 }
 
 }  // namespace inkray

@@ -33,6 +33,7 @@ struct ToonHit {
 struct ToonShade {
   Color radiance{0.f};    // towards hit.wo
   float reference = 0.f;  // irradiance (luminance) the light level is relative to; 0 without lights
+  float band = 0.f;       // FirstHit::band: where the look changes hard (bands, specular, rim)
 };
 
 // The toon look at a hit for one sample; *rays counts the shadow rays.

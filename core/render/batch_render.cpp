@@ -51,7 +51,7 @@ std::vector<PassRecord> render_batch(RenderSession& session, const BatchLimits& 
   // Passes stop at the limit even mid-pass. The tiles a cut pass finished keep their
   // sample: the film counts samples per pixel, so every pixel's mean stays right.
   PassDeadline deadline(session, limits.time_seconds);
-  while (int(session.stats().spp) < limits.spp && !deadline.passed()) {
+  while (int(session.stats().spp) < limits.spp && !deadline.passed() && !session.converged()) {
     if (!session.render_pass()) break;
     const RenderStats& s = session.stats();
     history.push_back({s.passes, s.spp, s.elapsed_seconds, s.relative_error});

@@ -1,6 +1,7 @@
 #include "core/render/export_job.h"
 
 #include "core/compiler/compile.h"
+#include "core/film/denoise.h"
 #include "core/io/output_set.h"
 #include "core/render/render_outputs.h"
 #include "core/render/render_session.h"
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 namespace inkray {
@@ -124,6 +126,7 @@ void ExportJob::run(ExportRequest request) {
   std::vector<AovFile> aov_files;
   for (Aov a : request.aovs) aov_files.push_back({a, aov_path(request.output, a)});
   std::vector<PlannedOutput> planned = {{request.output.string(), request.output}};
+  if (request.denoise) planned.push_back({raw_image_path(request.output).string(), raw_image_path(request.output)});
   for (const AovFile& a : aov_files) planned.push_back({a.file.string(), a.file});
   if (std::string problem = check_outputs(planned); !problem.empty()) return finish(std::move(problem));
   std::tie(request.scene.render.width, request.scene.render.height) = export_resolution(request);
@@ -146,7 +149,9 @@ void ExportJob::run(ExportRequest request) {
     return finish(compiled.errors.empty() ? "the scene did not compile" : compiled.errors.front());
   AovSet aovs;
   for (Aov a : request.aovs) aovs.add(a);
+  if (request.denoise) aovs.bits |= denoise_aovs().bits;
   session.set_scene(compiled.scene, aovs);
+  session.set_adaptive({request.noise_target, 16});
   {
     std::lock_guard lock(mutex_);
     session_ = &session;  // so cancel() stops the pass in flight
@@ -155,7 +160,7 @@ void ExportJob::run(ExportRequest request) {
   while (!cancelled_.load() && session.render_pass()) {
     after_pass(request, session);
     const RenderStats& s = session.stats();
-    if (int(s.spp) >= spp || noise_target_reached(s, request.noise_target)) break;
+    if (int(s.spp) >= spp || noise_target_reached(s, request.noise_target) || session.converged()) break;
     if (request.time_seconds > 0.0 && s.elapsed_seconds >= request.time_seconds) break;
   }
   {
@@ -165,9 +170,16 @@ void ExportJob::run(ExportRequest request) {
   }
   if (cancelled_.load()) return finish("cancelled");
   // The image and its AOVs land together or not at all: a failed AOV leaves no image.
+  std::optional<Denoised> denoised;
+  if (request.denoise) {
+    denoised = denoise(session.film(), &session.pool(), Cancel(&cancelled_));
+    if (cancelled_.load()) return finish("cancelled");
+    std::lock_guard lock(mutex_);
+    progress_.denoised_error = denoised->relative_error;
+  }
   std::string error;
-  if (write_render_outputs(session, request.output, aov_files, &error, Cancel(&cancelled_)) !=
-      OutputsWritten::all)
+  if (write_render_outputs(session, request.output, aov_files, &error, Cancel(&cancelled_), {},
+                           denoised ? &denoised->image : nullptr) != OutputsWritten::all)
     return finish(cancelled_.load() ? "cancelled" : error);
   {
     std::lock_guard lock(mutex_);

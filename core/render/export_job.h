@@ -25,7 +25,10 @@ struct ExportRequest {
   std::filesystem::path output;
   int spp = 256;              // at least 1: the sample cap even with a time or noise limit
   double time_seconds = 0.0;  // 0: none
-  double noise_target = 0.0;  // stop when the estimated relative error falls below; 0: none
+  // Stop when the estimated relative error falls below; 0: none. Tiles below it stop
+  // taking samples before that (adaptive sampling, core/render/adaptive_sampling.h).
+  double noise_target = 0.0;
+  bool denoise = false;  // the image is denoised; the raw one is written as <stem>_raw<ext>
   std::vector<Aov> aovs;      // written as "<stem>_<aov><ext>"
   int threads = 0;            // 0: every hardware thread (export_threads())
   // The export's resolution, leaving the document alone; 0 keeps the scene's. With one
@@ -53,6 +56,7 @@ struct ExportProgress {
   // (error falls as 1/sqrt(spp)), the time left for a time limit. Negative: unknown yet.
   double eta_seconds = -1.0;
   double relative_error = 0.0;  // estimated from the half-buffers; 0 before two passes
+  double denoised_error = 0.0;  // the denoised image's estimate, once it is denoised
   float fraction = 0.f;         // 0..1, the furthest limit's share reached
   int width = 0, height = 0, threads = 0;
 };

@@ -1,6 +1,7 @@
 #include "core/render/progressive_renderer.h"
 
 #include "core/film/aov_display.h"
+#include "core/film/denoise.h"
 #include "core/film/resolve.h"
 #include "core/compiler/compile.h"
 
@@ -17,8 +18,10 @@ namespace {
 constexpr int kFirstPreviewDivisor = 8;
 
 AovSet aovs_for(const ViewportView& view) {
-  AovSet aovs;
-  aovs.add(Aov::object_id);  // the selection highlight reads it
+  // The selection highlight reads object ids; the denoiser's features are always kept,
+  // so turning it on denoises the samples taken so far.
+  AovSet aovs = denoise_aovs();
+  aovs.add(Aov::object_id);
   if (view.display >= 0 && view.display < int(kAovNames.size())) aovs.add(Aov(view.display));
   return aovs;
 }
@@ -230,6 +233,8 @@ void ProgressiveRenderer::run() {
       continue;
     }
     base_current_ = false;  // the pass adds samples, finished or not
+    // Only the full-resolution film samples adaptively; each preview is one pass.
+    session_.set_adaptive({divisor == 1 ? limits.noise_target : 0.0, 16});
     if (!session_.render_pass()) continue;  // cancelled: a newer request is waiting
     const RenderStats& stats = session_.stats();
     if (divisor == 1) curve_.push_back({stats.elapsed_seconds, stats.relative_error});
@@ -249,7 +254,29 @@ bool ProgressiveRenderer::limits_reached(const ViewportLimits& limits) const {
   const RenderStats& s = session_.stats();
   if (limits.spp > 0 && int(s.spp) >= limits.spp) return true;
   if (limits.time_seconds > 0.0 && s.elapsed_seconds >= limits.time_seconds) return true;
-  return noise_target_reached(s, limits.noise_target);
+  return noise_target_reached(s, limits.noise_target) || session_.converged();
+}
+
+RgbImage ProgressiveRenderer::final_radiance(const ViewportView& view, bool finished, const Cancel& cancel) {
+  const Film& film = session_.film();
+  if (!view.denoise || film.width() == 0) return film.resolve();
+  // Denoising again costs a few passes' time at most: once its cost is small beside
+  // the time since, at a new accumulation, and when the render finishes.
+  const auto now = std::chrono::steady_clock::now();
+  const double since = std::chrono::duration<double>(now - denoised_at_).count();
+  const bool due = denoised_accumulation_ != accumulation_ || finished ||
+                   (session_.stats().spp != denoised_spp_ && since >= std::max(0.5, 4.0 * denoise_seconds_));
+  if (due) {
+    Denoised d = denoise(film, &session_.pool(), cancel);
+    if (d.image.pixels.empty()) return {};
+    denoised_ = std::move(d.image);
+    denoised_error_ = d.relative_error;
+    denoised_accumulation_ = accumulation_;
+    denoised_spp_ = session_.stats().spp;
+    denoise_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count();
+    denoised_at_ = std::chrono::steady_clock::now();
+  }
+  return denoised_;
 }
 
 void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderScene>& scene,
@@ -264,10 +291,14 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
     // exposure slider still applies to make small errors visible.
     snap->rgba = encode_display(film.resolve_noise(), DisplayEncoding{view.encoding.exposure, ViewTransform::raw});
   } else {
+    if (base_denoised_ != view.denoise) base_current_ = false;
     if (!base_current_) {
       const Cancel cancel(&superseded_);
-      base_ = resolve_base(film, scene->settings, &session_.pool(), cancel);
-      if (base_.pixels.empty()) return;  // cut short: the newer document is waiting
+      RgbImage radiance = final_radiance(view, finished, cancel);
+      if (radiance.pixels.empty()) return;  // cut short: the newer document is waiting
+      base_ = resolve_base(std::move(radiance), scene->settings, film.height(), &session_.pool(), cancel);
+      if (base_.pixels.empty()) return;
+      base_denoised_ = view.denoise;
       lines_ = gather_lines(film);
       base_settings_ = scene->settings;
       base_current_ = true;
@@ -295,6 +326,11 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
   snap->error_curve = curve_;
   snap->finished = finished;
   snap->accumulation = accumulation_;
+  snap->denoised = view.denoise && view.display == kDisplayFinal;
+  if (snap->denoised) {
+    snap->denoised_spp = denoised_spp_;
+    snap->denoised_error = denoised_error_;
+  }
   {
     std::lock_guard lock(mutex_);
     snap->revision = revision_;

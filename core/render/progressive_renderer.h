@@ -34,12 +34,18 @@ struct ViewportView {
   int highlight_object = -1;  // SceneDesc object index outlined in the viewport
   std::array<uint8_t, 3> highlight_rgb{255, 160, 40};
   std::array<uint8_t, 3> highlight_rim{24, 14, 0};  // just outside the object: two colours, unlike an outline
+  // The final image denoised (core/film/denoise.h). The viewport's film always keeps
+  // the denoiser's features, so turning it on denoises the samples already taken.
+  bool denoise = false;
+  bool operator==(const ViewportView&) const = default;
 };
 
 struct ViewportLimits {
   int spp = 64;
   double time_seconds = 0.0;  // 0: none
-  double noise_target = 0.0;  // stop when the estimated relative error is below; 0: none
+  // Stop when the estimated relative error is below; 0: none. Tiles below it stop
+  // taking samples before that (adaptive sampling, core/render/adaptive_sampling.h).
+  double noise_target = 0.0;
 };
 
 // A render region in fractions of the image, [x0,x1) x [y0,y1); empty is the whole image.
@@ -66,6 +72,12 @@ struct ViewportSnapshot {
   // edits that re-composite the samples already taken (docs/architecture.md, "Stages").
   uint64_t accumulation = 0;
   double submit_to_publish_ms = 0.0;      // latency from that submit() to this snapshot
+  // The final image is denoised: from the film at `denoised_spp` (the denoiser runs
+  // again only when its cost is small beside the passes since), with this estimated
+  // relative error (Denoised::relative_error); stats.relative_error stays the raw one.
+  bool denoised = false;
+  uint32_t denoised_spp = 0;
+  double denoised_error = 0.0;
 };
 
 class ProgressiveRenderer {
@@ -104,6 +116,8 @@ class ProgressiveRenderer {
   void publish_snapshot(const std::shared_ptr<const RenderScene>& scene, const ViewportView& view,
                         const ViewportLimits& limits, bool finished);
   bool limits_reached(const ViewportLimits& limits) const;
+  // The film's mean radiance as the final image starts from: denoised when the view asks.
+  RgbImage final_radiance(const ViewportView& view, bool finished, const Cancel& cancel);
 
   RenderSession session_;
   // Set when a newer document arrives (or the renderer stops): the compile and the
@@ -142,6 +156,14 @@ class ProgressiveRenderer {
   // so a new exposure or view transform composites them again over the same base
   // (core/film/resolve.h), without filtering again.
   RgbImage base_;
+  bool base_denoised_ = false;
+  // The last denoised radiance, of accumulation `denoised_accumulation_` at
+  // `denoised_spp_`, and what denoising it cost.
+  RgbImage denoised_;
+  uint64_t denoised_accumulation_ = ~uint64_t(0);
+  uint32_t denoised_spp_ = 0;
+  double denoised_error_ = 0.0, denoise_seconds_ = 0.0;
+  std::chrono::steady_clock::time_point denoised_at_;
   FilmLines lines_;
   RenderSettings base_settings_;
   bool base_current_ = false;

@@ -27,21 +27,27 @@ enum class OutputsWritten { all, failed, cancelled };
 // (core/film/resolve.h), so an EXR or PFM shown this way matches the PNG.
 inline constexpr DisplayEncoding kFileDisplay{0.f, ViewTransform::standard};
 
+// Where a denoised render puts the image as rendered: "<stem>_raw<ext>" beside it.
+std::filesystem::path raw_image_path(const std::filesystem::path& image);
+
 // Stages every file, then renames them all in. On `failed`, *error names the file
 // that failed and no target has been touched. `cancel` stops the painterly filter
 // (seconds at a large radius): `cancelled`, and nothing is written. `crop`, when
 // not empty, writes only those pixels of the image and the AOVs (a crop window
-// rendered alone: the painterly filter sees nothing outside it).
+// rendered alone: the painterly filter sees nothing outside it). `denoised`, when given,
+// is the film's mean radiance denoised (core/film/denoise.h): the image is resolved from
+// it, and the film's own mean, resolved the same way, goes to raw_image_path(image).
 OutputsWritten write_render_outputs(RenderSession& session, const std::filesystem::path& image,
                                     const std::vector<AovFile>& aovs, std::string* error,
-                                    const Cancel& cancel = {}, const PixelWindow& crop = {});
+                                    const Cancel& cancel = {}, const PixelWindow& crop = {},
+                                    const RgbImage* denoised = nullptr);
 // The same for a film without its session (inkray-merge), resolved with these
 // settings and outlines exactly as a session's film would be.
 OutputsWritten write_film_outputs(const Film& film, const RenderSettings& settings,
                                   const OutlineDesc& outlines, const std::filesystem::path& image,
                                   const std::vector<AovFile>& aovs, std::string* error,
                                   ThreadBudget* pool = nullptr, const Cancel& cancel = {},
-                                  const PixelWindow& crop = {});
+                                  const PixelWindow& crop = {}, const RgbImage* denoised = nullptr);
 // A partial file (film_partial.h) of info.window of `film`, replaced atomically.
 bool write_partial_file(const Film& film, const PartialInfo& info, const std::filesystem::path& file,
                         std::string* error);

@@ -65,6 +65,35 @@ void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet a
   tiles_done_.clear();
   line_pixels_.clear();
   if (lines_.active) line_pixels_.assign(size_t(width) * size_t(height), LinePixel{});
+  reset_adaptive();
+}
+
+void RenderSession::set_adaptive(const AdaptiveSampling& adaptive) {
+  // Stopped tiles stay stopped under the same or a looser threshold; a tighter one, or
+  // none, sets every tile sampling again.
+  const bool keep = adaptive.on() && adaptive_.on() && adaptive.threshold >= adaptive_.threshold;
+  adaptive_ = adaptive;
+  if (!keep) reset_adaptive();
+}
+
+void RenderSession::reset_adaptive() {
+  if (!film_) return;
+  tile_active_.assign(size_t(tile_count()), 1);
+  const TileGrid grid = tile_grid();
+  const PixelWindow w = active_window();
+  uint32_t n = 0;
+  for (int t = 0; t < grid.count(); ++t) {
+    const PixelWindow tw = grid.window(t);
+    n += tw.x1 > w.x0 && tw.x0 < w.x1 && tw.y1 > w.y0 && tw.y0 < w.y1;
+  }
+  stats_.active_tiles = stats_.tiles = n;
+}
+
+void RenderSession::update_adaptive() {
+  // Decided with both halves holding the same passes, once every tile has the minimum.
+  if (!adaptive_.on() || stats_.passes % 2 != 0 || stats_.spp < std::max(adaptive_.min_spp, 2u)) return;
+  stats_.active_tiles =
+      uint32_t(stop_converged_tiles(*film_, tile_grid(), active_window(), adaptive_, line_pixels_, tile_active_));
 }
 
 void RenderSession::restart_region(int x0, int y0, int x1, int y1) {
@@ -73,6 +102,7 @@ void RenderSession::restart_region(int x0, int y0, int x1, int y1) {
   first_pass_ = 0;
   tiles_done_.clear();
   set_region(x0, y0, x1, y1);
+  reset_adaptive();
   // The region's pixels probe again; those around it keep what they know, which
   // the region's line map reads.
   if (line_pixels_.empty()) return;
@@ -89,11 +119,7 @@ PixelWindow RenderSession::active_window() const {
           std::min(region_.y1, whole.y1)};
 }
 
-PixelWindow RenderSession::tile_window(int tile) const {
-  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
-  const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-  return {x0, y0, std::min(x0 + kTileSize, film_->width()), std::min(y0 + kTileSize, film_->height())};
-}
+PixelWindow RenderSession::tile_window(int tile) const { return tile_grid().window(tile); }
 
 template <class F>
 void RenderSession::for_margin_pixels(int tile, uint32_t pass, F&& f) const {
@@ -118,11 +144,7 @@ void RenderSession::finish_probes(uint32_t pass) {
     mark_line_neighbourhoods(line_pixels_, film_->width(), film_->height(), lines_, active_window());
 }
 
-int RenderSession::tile_count() const {
-  const int tiles_x = (film_->width() + kTileSize - 1) / kTileSize;
-  const int tiles_y = (film_->height() + kTileSize - 1) / kTileSize;
-  return tiles_x * tiles_y;
-}
+int RenderSession::tile_count() const { return tile_grid().count(); }
 
 bool RenderSession::render_pass() {
   cancelled_.store(false, std::memory_order_relaxed);
@@ -132,9 +154,11 @@ bool RenderSession::render_pass() {
   // A pass cancelled before resumes where it stopped: its finished tiles already
   // hold this pass's sample, and a second would repeat it.
   if (tiles_done_.size() != size_t(tiles)) tiles_done_.assign(size_t(tiles), 0);
+  if (tile_active_.size() != size_t(tiles)) reset_adaptive();
   std::fill(worker_rays_.begin(), worker_rays_.end(), 0);
   pool_.parallel_for(tiles, [&](int tile, int worker) {
-    if (tiles_done_[size_t(tile)] || cancelled_.load(std::memory_order_relaxed)) return;
+    if (tiles_done_[size_t(tile)] || !tile_active_[size_t(tile)] || cancelled_.load(std::memory_order_relaxed))
+      return;
     render_tile(tile, worker, pass);
     tiles_done_[size_t(tile)] = 1;
   });
@@ -145,9 +169,18 @@ bool RenderSession::render_pass() {
   ++stats_.passes;
   ++stats_.spp;
   for (uint64_t r : worker_rays_) stats_.rays += r;
-  stats_.paths += uint64_t(film_->width()) * uint64_t(film_->height());
+  uint64_t paths = 0;
+  const PixelWindow r = active_window();
+  for (int t = 0; t < tiles; ++t) {
+    if (!tile_active_[size_t(t)]) continue;
+    const PixelWindow w = tile_window(t);
+    paths += uint64_t(std::max(0, std::min(w.x1, r.x1) - std::max(w.x0, r.x0))) *
+             uint64_t(std::max(0, std::min(w.y1, r.y1) - std::max(w.y0, r.y0)));
+  }
+  stats_.paths += paths;
   stats_.nonfinite_samples = film_->nonfinite_samples();
   stats_.relative_error = stats_.spp >= 2 ? film_->estimated_relative_error() : 0.0;
+  update_adaptive();
   return true;
 }
 
@@ -325,6 +358,7 @@ void RenderSession::continue_from(uint32_t first, uint32_t next, const std::vect
     tiles_done_ = tiles_done;
   else
     tiles_done_.clear();
+  reset_adaptive();
 }
 
 void RenderSession::load_film(const Film& window_film) {

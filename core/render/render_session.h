@@ -7,6 +7,7 @@
 #include "core/film/film.h"
 #include "core/npr/outlines/line_detector.h"
 #include "core/npr/outlines/line_sampling.h"
+#include "core/render/adaptive_sampling.h"
 #include "core/world/render_scene.h"
 
 #include <array>
@@ -26,6 +27,8 @@ struct RenderStats {
   uint64_t rays = 0;
   uint64_t paths = 0;
   uint64_t nonfinite_samples = 0;
+  // Adaptive sampling: tiles of the active window still taking samples, of how many.
+  uint32_t active_tiles = 0, tiles = 0;
 };
 
 // A progressive render's noise limit: the half-buffer estimate is too rough over the
@@ -44,8 +47,11 @@ class RenderSession {
   void set_scene(std::shared_ptr<const RenderScene> scene, AovSet aovs = {}, int divisor = 1);
   // Restricts passes to film pixels in [x0,x1) x [y0,y1) (a render region);
   // an empty rectangle means the whole film. Pixels outside keep their sums.
-  void set_region(int x0, int y0, int x1, int y1) { region_ = {x0, y0, x1, y1}; }
-  void set_region(const PixelWindow& w) { region_ = w; }
+  void set_region(int x0, int y0, int x1, int y1) { set_region({x0, y0, x1, y1}); }
+  void set_region(const PixelWindow& w) {
+    region_ = w;
+    reset_adaptive();
+  }
   // Starts the region's accumulation again (stats from zero), keeping the film's
   // pixels outside it, and restricts passes to it.
   void restart_region(int x0, int y0, int x1, int y1);
@@ -76,6 +82,12 @@ class RenderSession {
   // the film is resolved (line colours, the painterly filter, render limits: the
   // resolve and limits stages): the samples accumulated so far stay.
   void update_scene(std::shared_ptr<const RenderScene> scene) { scene_ = std::move(scene); }
+  // Adaptive sampling from the next pass on (adaptive_sampling.h). A tighter threshold,
+  // or 0 (off), sets every tile sampling again, as do a new scene and a new region.
+  void set_adaptive(const AdaptiveSampling& adaptive);
+  const AdaptiveSampling& adaptive() const { return adaptive_; }
+  // Every tile has stopped: more passes would add nothing.
+  bool converged() const { return adaptive_.on() && stats_.passes > 0 && stats_.active_tiles == 0; }
   // Renders one pass; false when cancelled, leaving a partial pass in the film
   // that the next call completes (its finished tiles are not rendered again).
   bool render_pass();
@@ -101,6 +113,9 @@ class RenderSession {
   // whole film. Calls f(x, y) for each in the tile.
   template <class F> void for_margin_pixels(int tile, uint32_t pass, F&& f) const;
   PixelWindow tile_window(int tile) const;
+  TileGrid tile_grid() const { return {film_->width(), film_->height(), kTileSize}; }
+  void reset_adaptive();  // every tile active
+  void update_adaptive();  // after a pass
   int tile_count() const;
   PixelWindow active_window() const;  // the region, or the whole film
   // The lines of the sample (x, y, pass) alone, as render_tile finds them, given `count` rays.
@@ -120,6 +135,8 @@ class RenderSession {
   std::atomic<bool> cancelled_{false};
   std::vector<uint64_t> worker_rays_;  // one slot per worker: no shared counter on the hot path
   std::vector<uint8_t> tiles_done_;  // tiles of the pass in progress already in the film
+  AdaptiveSampling adaptive_;
+  std::vector<uint8_t> tile_active_;  // per tile: still taking samples
   int divisor_ = 1;
   PixelWindow region_;
 };

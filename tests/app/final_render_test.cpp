@@ -87,6 +87,28 @@ TEST_F(FinalRender, SlicesMergeToTheImageOfOneRun) {
   EXPECT_EQ(read(dir_ / "one.pfm").pixels, read(dir_ / "staged.pfm").pixels);
 }
 
+// Denoising a split render: the slices keep the features, the merge denoises, and the
+// result is the single-machine render's denoised image, bit for bit (the halves and
+// features add up exactly).
+TEST_F(FinalRender, DenoisedSlicesMergeToTheDenoisedImageOfOneRun) {
+  ASSERT_EQ(render("--spp 8 --denoise -o " + path("one.pfm")).exit_code, 0);
+  RunResult r = render("--samples 0 3 --denoise -o " + path("a.exr"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = render("--samples 3 8 --denoise -o " + path("b.exr"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = merge(path("merged.pfm") + " " + path("a.exr") + " " + path("b.exr") + " --denoise");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("denoised"), std::string::npos) << r.output;
+  EXPECT_EQ(read(dir_ / "one.pfm").pixels, read(dir_ / "merged.pfm").pixels);
+  EXPECT_EQ(read(dir_ / "one_raw.pfm").pixels, read(dir_ / "merged_raw.pfm").pixels);
+  // Slices without the features cannot be denoised: one line naming the partial.
+  ASSERT_EQ(render("--samples 0 8 -o " + path("plain.exr")).exit_code, 0);
+  r = merge(path("x.pfm") + " " + path("plain.exr") + " --denoise");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("plain.exr"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--denoise"), std::string::npos) << r.output;
+}
+
 // Slices after the first read the line decisions written once by --decide-lines; one
 // of another render is refused with one line.
 TEST_F(FinalRender, SlicesReadingLineDecisionsMergeToTheImageOfOneRun) {

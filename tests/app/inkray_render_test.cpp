@@ -144,6 +144,38 @@ TEST_F(InkrayRender, RendersImageAndAovsAndPrintsErrorTable) {
   EXPECT_NE(r.output.find("4 spp"), std::string::npos) << r.output;
 }
 
+// --denoise writes the denoised image and the raw one beside it, with both estimates;
+// the raw one is the render without --denoise, sample for sample.
+TEST_F(InkrayRender, DenoiseWritesTheDenoisedAndTheRawImage) {
+  const auto out = dir_ / "c.pfm";
+  const std::string args = scene("cornell_outlines.json") + " --spp 8 --width 48 --height 48 -o ";
+  RunResult r = run_render(args + out.string() + " --denoise");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("denoised"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("c_raw.pfm"), std::string::npos) << r.output;
+  r = run_render(args + (dir_ / "plain.pfm").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  RgbImage denoised, raw, plain;
+  std::string error;
+  ASSERT_TRUE(read_pfm(out, &denoised, &error)) << error;
+  ASSERT_TRUE(read_pfm(dir_ / "c_raw.pfm", &raw, &error)) << error;
+  ASSERT_TRUE(read_pfm(dir_ / "plain.pfm", &plain, &error)) << error;
+  EXPECT_EQ(raw.pixels, plain.pixels);
+  EXPECT_NE(denoised.pixels, raw.pixels);
+  // An existing raw file is only replaced as the render's other outputs are: the name
+  // is planned with them, so the same file twice is refused before rendering.
+  r = run_render(args + out.string() + " --denoise --aov depth=" + (dir_ / "c_raw.pfm").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+// Adaptive sampling in the CLI: the render reports its stopped tiles and fewer samples.
+TEST_F(InkrayRender, NoiseThresholdStopsCleanTiles) {
+  const RunResult r = run_render(scene("cornell.json") + " -o " + (dir_ / "c.png").string() +
+                                 " --spp 64 --width 64 --height 64 --noise-threshold 0.2 --min-spp 8");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("adaptive sampling:"), std::string::npos) << r.output;
+}
+
 TEST_F(InkrayRender, TimeLimitStopsBeforeSpp) {
   const RunResult r = run_render(scene("cornell.json") + " -o " + (dir_ / "c.png").string() +
                                  " --spp 100000 --time 0.2 --width 32 --height 32");
@@ -164,6 +196,10 @@ TEST_F(InkrayRender, BadArgumentsGiveOneLineAndExitTwo) {
                         Case{scene("cornell.json") + png + " --aov colour=a.png", "--aov: expected NAME=FILE"},
                         Case{scene("cornell.json") + png + " --frobnicate", "unknown option \"--frobnicate\""},
                         Case{scene("cornell.json") + " -o out.bmp", "unknown image format"},
+                        Case{scene("cornell.json") + png + " --noise-threshold 0", "--noise-threshold: expected"},
+                        Case{scene("cornell.json") + png + " --min-spp 8", "add --noise-threshold"},
+                        Case{scene("cornell.json") + " --samples 0 4 -o p.exr --noise-threshold 0.1",
+                             "adaptive sampling is for renders on one machine"},
                         Case{scene("cornell.json") + " -o /nonexistent/dir/a.png", "does not exist"}}) {
     const RunResult r = run_render(c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
@@ -190,7 +226,8 @@ TEST_F(InkrayRender, SceneErrorsNameTheFileAndWriteNothing) {
 TEST_F(InkrayRender, HelpDocumentsEveryOption) {
   const RunResult r = run_render("--help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* opt : {"--output", "--spp", "--time", "--threads", "--width", "--height", "--seed", "--aov", "--write-scene", "--memory-limit"})
+  for (const char* opt : {"--output", "--spp", "--time", "--threads", "--width", "--height", "--seed", "--aov",
+                          "--write-scene", "--memory-limit", "--denoise", "--noise-threshold", "--min-spp"})
     EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
 

@@ -91,6 +91,30 @@ TEST(ExportJob, WritesPngAndExrWithAovsAtSceneSize) {
   fs::remove_all(dir);
 }
 
+// Denoised from the export dialog: the image denoised, the raw one beside it, and the
+// denoised estimate in the progress figures.
+TEST(ExportJob, DenoiseWritesTheDenoisedAndTheRawImage) {
+  const fs::path dir = fresh_dir("denoise");
+  ExportRequest r;
+  r.scene = example("cornell_outlines.json", 48, 32);
+  r.output = dir / "out.pfm";
+  r.spp = 8;
+  r.threads = 2;
+  r.denoise = true;
+  ExportJob job(r);
+  wait_done(job);
+  EXPECT_EQ(job.error(), "");
+  ASSERT_EQ(job.written().size(), 2u);
+  RgbImage denoised, raw;
+  std::string error;
+  ASSERT_TRUE(read_pfm(dir / "out.pfm", &denoised, &error)) << error;
+  ASSERT_TRUE(read_pfm(dir / "out_raw.pfm", &raw, &error)) << error;
+  EXPECT_NE(denoised.pixels, raw.pixels);
+  EXPECT_GT(job.progress().denoised_error, 0.0);
+  EXPECT_LT(job.progress().denoised_error, job.progress().relative_error);
+  fs::remove_all(dir);
+}
+
 TEST(ExportJob, UnwritablePathReportsTheFile) {
   const fs::path dir = fresh_dir("bad");
   ExportRequest r;
