@@ -9,6 +9,8 @@ namespace inkray {
 
 // What the camera sample saw at its first hit.
 struct FirstHit {
+  // Of the first surface that is not a perfect mirror or clear glass along the camera's
+  // specular chain: what a mirror or a pane shows, as the denoiser's guide needs.
   Color albedo{0.f};
   Normal3 normal{0.f};
   float depth = 0.f;  // distance along the camera's forward axis

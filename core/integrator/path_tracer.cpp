@@ -206,7 +206,15 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
       st.beta *= r.weight;
     }
     const Material& material = *chosen;
-    if (depth == 0 && first_hit) record_first_hit(scene, camera, si, material, first_hit);
+    if (depth == 0 && first_hit) {
+      record_first_hit(scene, camera, si, material, first_hit);
+    } else if (first_hit && st.specular_chain) {
+      // Seen in a mirror or through glass: the surface seen is what the denoiser's guide
+      // should describe (its texture, its shape), so its albedo and normal replace
+      // those of the mirror; the ids and depth stay the first hit's.
+      first_hit->albedo = material_albedo(material, si);
+      first_hit->normal = si.ns;
+    }
 
     // Opaque surfaces are two-sided: face them towards the viewer. Surfaces
     // that transmit keep their orientation, which tells inside from outside.
