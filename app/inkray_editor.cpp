@@ -375,6 +375,7 @@ int main(int argc, char** argv) {
         std::printf("viewport image: %d %d %d %d\n", int(v.image_x), int(v.image_y), int(v.image_w),
                     int(v.image_h));
         std::printf("viewport spp: %u\n", app.viewport().shown_spp());
+        std::printf("viewport denoised: %d\n", app.viewport().shown_denoised() ? 1 : 0);
         std::printf("ui scale: %.2f\n", app.ui_scale());
         exit_code = write_screenshot(opt.screenshot, w, h) ? 0 : 1;
         if (!opt.node_layout.empty() && !write_text(opt.node_layout, app.node_editor().layout())) exit_code = 1;

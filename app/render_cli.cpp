@@ -79,7 +79,7 @@ Final renders on many machines (docs/final-renders.md):
 The same scene, seed and sample count give the same image at any thread count, on one machine
 or merged from slices and crops of it.
 After the render a table lists, per pass checkpoint, the samples per pixel, the elapsed
-seconds and the estimated relative error (from the difference of even and odd passes);
+seconds and the estimated relative error (from the difference of the two half-buffers);
 with --frames, one line per frame.
 Exit status: 0 on success, 1 on a scene or output error, 2 on bad arguments.
 )";

@@ -382,6 +382,7 @@ ViewportFrame ViewportPanel::draw(EditorState& state, ProgressiveRenderer& rende
       shown_revision_ = s->revision;
       shown_divisor_ = s->divisor;
       shown_spp_ = s->stats.spp;
+      shown_denoised_ = s->denoised;
       snapshot_ = std::move(s);
     }
     uploaded_generation_ = generation;

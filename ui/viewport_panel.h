@@ -34,6 +34,7 @@ class ViewportPanel {
   // Whether a snapshot at full resolution has been shown (screenshots wait for it).
   bool shown_full_resolution() const { return shown_divisor_ == 1; }
   uint32_t shown_spp() const { return shown_spp_; }
+  bool shown_denoised() const { return shown_denoised_; }
   // For inkray --measure-edits: the image on screen (null before the first) and its revision.
   const std::shared_ptr<const ViewportSnapshot>& shown_snapshot() const { return snapshot_; }
   uint64_t shown_revision() const { return shown_revision_; }
@@ -61,6 +62,7 @@ class ViewportPanel {
   uint64_t shown_revision_ = 0;
   int shown_divisor_ = 0;
   uint32_t shown_spp_ = 0;
+  bool shown_denoised_ = false;
   std::shared_ptr<const ViewportSnapshot> snapshot_;
   CameraController controller_;
   bool show_stats_ = true;

@@ -1,5 +1,6 @@
-// The film: per-pixel running sums of radiance in two half-buffers (even and
-// odd passes, whose difference estimates the noise without a reference), and
+// The film: per-pixel running sums of radiance in two half-buffers (each pass
+// adds to one, half_of_pass; their difference estimates the noise without a
+// reference, and the denoiser cross-validates its filters on them), and
 // the first-hit AOVs a render asked for. Tiles are disjoint, so writers need
 // no locks; a pixel is written by one thread at a time.
 //
@@ -74,7 +75,7 @@ struct LineSums {
 // One pixel's raw state: what a partial file holds and a merge adds up
 // (film_partial.h). Ids are -2 before the pixel's first sample.
 struct FilmPixel {
-  std::array<glm::dvec3, 2> sum{glm::dvec3(0.0), glm::dvec3(0.0)};  // radiance of even and odd passes
+  std::array<glm::dvec3, 2> sum{glm::dvec3(0.0), glm::dvec3(0.0)};  // radiance of the two halves (half_of_pass)
   std::array<uint32_t, 2> count{};
   glm::dvec3 albedo_sum{0.0}, normal_sum{0.0};
   double depth_sum = 0.0, band_sum = 0.0;

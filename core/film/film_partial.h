@@ -16,7 +16,9 @@
 namespace inkray {
 
 inline constexpr std::string_view kPartialFormat = "inkray-partial";
-inline constexpr int kPartialVersion = 1;
+// 2: passes go to the halves by half_of_pass (film.h), and the toon_band and ids_mixed
+// channels exist; a version-1 partial cannot be merged with them.
+inline constexpr int kPartialVersion = 2;
 
 struct PartialInfo {
   int width = 0, height = 0;  // the full image
