@@ -216,7 +216,7 @@ void ExportUi::limits_rows() {
   ImGui::Checkbox("##denoise", &form_.denoise);
   widget_report::item("export.denoise");
   ImGui::SameLine();
-  ImGui::TextDisabled(form_.denoise ? "lines, ids and toon bands stay crisp; the raw image is written as _raw too"
+  ImGui::TextDisabled(form_.denoise ? "lines and bands stay crisp; also writes <name>_raw"
                                     : "off: the image as rendered");
 }
 

@@ -197,6 +197,13 @@ TEST(ExportForm, ListsTheFilesStartWouldReplace) {
   EXPECT_EQ(check_export_form(form, {}).existing.size(), 2u);
   fs::create_directory(dir / "out_albedo.png");
   EXPECT_NE(check_export_form(form, {}).error.find("out_albedo.png is a folder"), std::string::npos);
+  // Denoised, the raw image is one of them, and the request asks for denoising.
+  fs::remove(dir / "out_albedo.png");
+  form.denoise = true;
+  c = check_export_form(form, {});
+  EXPECT_EQ(c.files, (std::vector<fs::path>{dir / "out.png", dir / "out_raw.png", dir / "out_albedo.png",
+                                            dir / "out_depth.png"}));
+  EXPECT_TRUE(make_export_request(form, c, SceneDesc{}).denoise);
 }
 
 TEST(ExportForm, RefusesLimitsOutOfRange) {
