@@ -165,16 +165,17 @@ int run(const Options& opt) {
     std::printf(" %10s %14s %14s %12s %14s %14s", "denoise s", "RMSE disp. dn", "RMSE lin. dn", "est. dn",
                 "edge RMSE raw", "edge RMSE dn");
   std::printf("\n");
-  // Pixels within 2 of an object id edge (of the reference's first hits): where a
-  // denoiser that blurred across ids would show.
+  // Pixels within 2 of an object id edge or a toon band edge (of 16 passes of first hits):
+  // where a denoiser that blurred across ids or bands would show.
   std::vector<uint8_t> near_edge;
   if (opt.denoise) {
-    RenderSession ids(opt.threads);
+    RenderSession edges(opt.threads);
     AovSet a;
     a.add(Aov::object_id);
-    ids.set_scene(compiled.scene, a);
-    ids.render_pass();
-    const RgbImage id = ids.film().resolve_aov(Aov::object_id);
+    a.add(Aov::toon_band);
+    edges.set_scene(compiled.scene, a);
+    render_batch(edges, {16, 0.0});
+    const RgbImage id = edges.film().resolve_aov(Aov::object_id), band = edges.film().resolve_aov(Aov::toon_band);
     const int w = id.width, h = id.height;
     near_edge.assign(size_t(w) * size_t(h), 0);
     for (int y = 0; y < h; ++y)
@@ -182,7 +183,8 @@ int run(const Options& opt) {
         for (int dy = -2; dy <= 2; ++dy)
           for (int dx = -2; dx <= 2; ++dx) {
             const int qx = std::clamp(x + dx, 0, w - 1), qy = std::clamp(y + dy, 0, h - 1);
-            if (id.at(qx, qy).x != id.at(x, y).x) near_edge[size_t(y) * size_t(w) + size_t(x)] = 1;
+            if (id.at(qx, qy).x != id.at(x, y).x || std::abs(band.at(qx, qy).x - band.at(x, y).x) > 0.25f)
+              near_edge[size_t(y) * size_t(w) + size_t(x)] = 1;
           }
   }
   const auto edge_rmse = [&](const RgbImage& img) {
