@@ -90,14 +90,14 @@ std::vector<float> box_blur(const std::vector<float>& v, int w, int h, int r, Th
   return out;
 }
 
-std::vector<Guide> make_guides(const Film& film, const Features& f) {
+std::vector<Guide> make_guides(const Film& film, const Features& f, ThreadBudget* pool, const Cancel& cancel) {
   const int w = film.width(), h = film.height();
   const size_t n = size_t(w) * size_t(h);
   std::vector<Guide> g(n);
   const RgbImage albedo = film.resolve_aov(Aov::albedo), normal = film.resolve_aov(Aov::normal),
                  depth = film.resolve_aov(Aov::depth), band = film.resolve_aov(Aov::toon_band),
                  object = film.resolve_aov(Aov::object_id), material = film.resolve_aov(Aov::material_id);
-  for (int y = 0; y < h; ++y) {
+  for_rows(h, pool, cancel, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * size_t(w) + size_t(x);
       Guide& p = g[i];
@@ -121,6 +121,28 @@ std::vector<Guide> make_guides(const Film& film, const Features& f) {
         if (max_component(p.albedo) > 0.f) p.divisor = p.albedo + Color(kDemodulateEps);
       }
     }
+  });
+  // A pixel between two edge pixels (along a row, a column or a diagonal) is on the edge
+  // too, whichever ids its own samples happened to draw: under a lamp's rim a pixel whose
+  // samples all missed the rim's few percent is otherwise cut off from the ones that drew
+  // it, and neither side can average to the row's mean.
+  constexpr int kAxes[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+  std::vector<uint8_t> between(n, 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * size_t(w) + size_t(x);
+      for (const auto& d : kAxes) {
+        const int ax = x - d[0], ay = y - d[1], bx = x + d[0], by = y + d[1];
+        if (ax < 0 || ay < 0 || bx < 0 || by < 0 || ax >= w || ay >= h || bx >= w || by >= h) continue;
+        const Guide& a = g[size_t(ay) * size_t(w) + size_t(ax)];
+        const Guide& b = g[size_t(by) * size_t(w) + size_t(bx)];
+        if (a.object == -3 && b.object == -3) between[i] |= 1u;
+        if (a.material == -3 && b.material == -3) between[i] |= 2u;
+      }
+    }
+  for (size_t i = 0; i < n; ++i) {
+    if (f.object && (between[i] & 1u)) g[i].object = -3;
+    if (f.material && (between[i] & 2u)) g[i].material = -3;
   }
   if (!f.depth) return g;
   // The depth slope: the smaller one-sided difference along each axis among pixels of
@@ -152,13 +174,18 @@ bool same_region(const Guide& p, const Guide& q) {
          std::abs(p.band - q.band) < kBandTolerance;
 }
 
-// The weight of the features alone (normal, depth, albedo), at `step` pixels apart.
-float feature_weight(const Guide& p, const Guide& q, int step) {
+// The weight of the features alone (normal, depth, albedo), at `step` pixels apart, as
+// a factor (the normals') and an exponent (depth and albedo), so the colour weight
+// joins the exponent and a tap costs one exp per half.
+struct FeatureWeight {
+  float factor, exponent;
+};
+FeatureWeight feature_weight(const Guide& p, const Guide& q, int step) {
   float wn = 1.f;
   if (p.normal != Vec3(0.f) || q.normal != Vec3(0.f)) wn = pow32(std::max(0.f, glm::dot(p.normal, q.normal)));
   const float dz = std::abs(p.depth - q.depth) / (kSigmaDepth * p.slope * float(step) + 1e-3f * p.depth + 1e-6f);
   const Color da = p.albedo - q.albedo;
-  return wn * std::exp(-dz - kAlbedoScale * glm::dot(da, da));
+  return {wn, dz + kAlbedoScale * glm::dot(da, da)};
 }
 
 }  // namespace
@@ -176,7 +203,7 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
   const AovSet& has = film.aovs();
   const Features f{has.has(Aov::normal),    has.has(Aov::depth),       has.has(Aov::albedo),
                    has.has(Aov::toon_band), has.has(Aov::object_id), has.has(Aov::material_id)};
-  const std::vector<Guide> g = make_guides(film, f);
+  const std::vector<Guide> g = make_guides(film, f, pool, cancel);
 
   // The halves' means (demodulated), their sample counts, and the variance of one
   // half's luminance: E[(a - b)^2] = Var(a) + Var(b), about 2 Var(a).
@@ -184,7 +211,7 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
   std::array<std::vector<float>, 2> var{std::vector<float>(n, 0.f), std::vector<float>(n, 0.f)};
   std::vector<Color> raw_a(n, Color(0.f)), raw_b(n, Color(0.f));
   std::vector<float> share_a(n, 0.5f);  // half a's share of the pixel's samples
-  for (int y = 0; y < h; ++y) {
+  for_rows(h, pool, cancel, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * size_t(w) + size_t(x);
       const FilmPixel fp = film.pixel(x, y);
@@ -201,7 +228,7 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
       const float d = luminance(cur[0][i] - cur[1][i]);
       var[0][i] = var[1][i] = 0.5f * d * d;
     }
-  }
+  });
 
   // Rung 0: the raw mean. Its cross-validation error is 2 (a - b)^2.
   Denoised result;
@@ -254,10 +281,12 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
             const size_t j = size_t(qy) * size_t(w) + size_t(qx);
             const Guide& q = g[j];
             if (!same_region(p, q)) continue;
-            const float wf = kKernel[dx + 1] * kKernel[dy + 1] * feature_weight(p, q, step);
-            if (!(wf > 1e-6f)) continue;
+            const FeatureWeight fw = feature_weight(p, q, step);
+            const float wf = kKernel[dx + 1] * kKernel[dy + 1] * fw.factor;
+            if (!(wf > 1e-6f) || !(fw.exponent < 14.f)) continue;  // e^-14: under 1e-6
             for (int half = 0; half < 2; ++half) {
-              const float wc = wf * std::exp(-std::abs(lp[half] - luminance(cur[half][j])) / sd[half][i]);
+              const float wc =
+                  wf * std::exp(-fw.exponent - std::abs(lp[half] - luminance(cur[half][j])) / sd[half][i]);
               sum[half] += wc * cur[half][j];
               wsum[half] += wc;
               vsum[half] += wc * wc * var[half][j];
@@ -275,27 +304,31 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
     std::swap(var, next_var);
 
     // Cross-validation: this rung of half a against raw half b, and the other way.
-    for (size_t i = 0; i < n; ++i) {
-      if (!g[i].sampled) {
-        err[i] = 0.f;
-        continue;
+    for_rows(h, pool, cancel, [&](int y) {
+      for (size_t i = size_t(y) * size_t(w); i < size_t(y + 1) * size_t(w); ++i) {
+        if (!g[i].sampled) {
+          err[i] = 0.f;
+          continue;
+        }
+        const float fa = luminance(cur[0][i] * g[i].divisor), fb = luminance(cur[1][i] * g[i].divisor);
+        const float ea = fa - luminance(raw_b[i]), eb = fb - luminance(raw_a[i]);
+        err[i] = ea * ea + eb * eb;
       }
-      const float fa = luminance(cur[0][i] * g[i].divisor), fb = luminance(cur[1][i] * g[i].divisor);
-      const float ea = fa - luminance(raw_b[i]), eb = fb - luminance(raw_a[i]);
-      err[i] = ea * ea + eb * eb;
-    }
+    });
     const std::vector<float> smoothed = box_blur(err, w, h, kErrorRadius, pool, cancel);
     if (cancel.requested()) return {};
-    for (size_t i = 0; i < n; ++i) {
-      if (!g[i].sampled || !(smoothed[i] < best_smoothed[i])) continue;
-      best_smoothed[i] = smoothed[i];
-      best_err[i] = err[i];
-      best_level[i] = uint8_t(level);
-      const Color a = cur[0][i] * g[i].divisor, b = cur[1][i] * g[i].divisor;
-      out[i] = share_a[i] * a + (1.f - share_a[i]) * b;
-      const float d = luminance(a) - luminance(b);
-      best_diff2[i] = d * d;
-    }
+    for_rows(h, pool, cancel, [&](int y) {
+      for (size_t i = size_t(y) * size_t(w); i < size_t(y + 1) * size_t(w); ++i) {
+        if (!g[i].sampled || !(smoothed[i] < best_smoothed[i])) continue;
+        best_smoothed[i] = smoothed[i];
+        best_err[i] = err[i];
+        best_level[i] = uint8_t(level);
+        const Color a = cur[0][i] * g[i].divisor, b = cur[1][i] * g[i].divisor;
+        out[i] = share_a[i] * a + (1.f - share_a[i]) * b;
+        const float d = luminance(a) - luminance(b);
+        best_diff2[i] = d * d;
+      }
+    });
   }
 
   // MSE of one denoised half: err / 2 - Var(half), Var(half) ~ (a - b)^2 / 2. The two

@@ -6,15 +6,18 @@
 namespace inkray {
 namespace {
 
+// A pixel's mean darker than this counts as this dark: near black, relative error means
+// nothing on a display.
+constexpr double kDarkest = 1e-3;
+
 struct TileSums {
-  double var = 0.0, lum = 0.0;  // sums over the tile's pixels with both halves
+  double relative_var = 0.0;  // sum over the tile's pixels with both halves of Var(mean) / mean^2
   double pixels = 0.0;
-  void add(const TileSums& o) { var += o.var, lum += o.lum, pixels += o.pixels; }
-  // Relative error of the means; a black tile without noise has none.
-  double error() const {
-    if (pixels <= 0.0 || var <= 0.0) return 0.0;
-    return std::sqrt(var / pixels) / std::max(lum / pixels, 1e-6);
-  }
+  void add(const TileSums& o) { relative_var += o.relative_var, pixels += o.pixels; }
+  // RMS of the pixels' relative errors. Each pixel is relative to itself, so a lamp's
+  // brightness does not hide the noise of the dim rim beside it; a black tile without
+  // noise has none.
+  double error() const { return pixels > 0.0 ? std::sqrt(relative_var / pixels) : 0.0; }
 };
 
 std::vector<TileSums> tile_sums(const Film& film, const TileGrid& grid, const PixelWindow& active) {
@@ -26,8 +29,8 @@ std::vector<TileSums> tile_sums(const Film& film, const TileGrid& grid, const Pi
       for (int x = std::max(w.x0, active.x0); x < std::min(w.x1, active.x1); ++x) {
         if (!film.half_count(x, y, 0) || !film.half_count(x, y, 1)) continue;
         const double a = film.half_luminance(x, y, 0), b = film.half_luminance(x, y, 1);
-        s.var += 0.25 * (a - b) * (a - b);  // Var(mean of both) ~ (a - b)^2 / 4
-        s.lum += 0.5 * (a + b);
+        const double mean = std::max(0.5 * (a + b), kDarkest);
+        s.relative_var += 0.25 * (a - b) * (a - b) / (mean * mean);  // Var(mean of both) ~ (a - b)^2 / 4
         s.pixels += 1.0;
       }
   }

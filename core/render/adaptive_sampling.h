@@ -30,8 +30,9 @@ struct TileGrid {
   PixelWindow window(int tile) const;
 };
 
-// Per tile, the estimated relative RMS error of its pixels' means (as
-// Film::estimated_relative_error over the tile): 0 for tiles without two halves.
+// Per tile, the RMS over its pixels of each pixel's estimated relative error (from the
+// halves' difference, relative to the pixel's own mean, at least 1e-3): 0 for tiles
+// without two halves.
 std::vector<double> tile_errors(const Film& film, const TileGrid& grid, const PixelWindow& active);
 
 // Clears active[t] for tiles of `active` window that may stop: both estimates below the

@@ -127,6 +127,37 @@ TEST(Denoise, DoesNotMixAcrossToonBands) {
   expect_edge_kept([](int x, int) { return hit_at(0, x < 24 ? 0.f : 1.f); }, "toon bands");
 }
 
+TEST(Denoise, ARimRowAveragesToItsMeanWhicheverIdsEachPixelDrew) {
+  // A lamp (radiance 15, object 1) above a ceiling (0.1, object 0); the row between has
+  // the lamp in a tenth of each pixel. A pixel that drew the lamp is an edge pixel, one
+  // that did not looks like ceiling: the row is denoised towards its mean only if the
+  // latter count as edge pixels too, between edge pixels along the row.
+  constexpr int kW = 64, kH = 12, kRim = 6, kSpp = 16;
+  constexpr float kShare = 0.1f;
+  auto film = std::make_unique<Film>(kW, kH, denoise_aovs());
+  Pcg32 rng(11);
+  for (int pass = 0; pass < kSpp; ++pass)
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        const bool lamp = y < kRim || (y == kRim && rng.next_float() < kShare);
+        // The ceiling's light is noisy, the lamp's is not.
+        film->add_sample(x, y, uint32_t(pass), Color(lamp ? 15.f : 0.1f * (0.5f + rng.next_float())));
+        film->add_first_hit(x, y, hit_at(lamp ? 1 : 0, -1.f, Color(lamp ? 1.f : 0.5f)));
+      }
+  const Denoised d = denoise(*film);
+  const RgbImage raw = film->resolve();
+  const float truth = kShare * 15.f + (1.f - kShare) * 0.1f;
+  double raw_error = 0.0, denoised_error = 0.0;
+  for (int x = 0; x < kW; ++x) {
+    raw_error += std::pow(double(raw.at(x, kRim).g - truth), 2.0);
+    denoised_error += std::pow(double(d.image.at(x, kRim).g - truth), 2.0);
+  }
+  EXPECT_LT(denoised_error, 0.5 * raw_error) << "raw " << raw_error << ", denoised " << denoised_error;
+  // The lamp keeps its value, and the ceiling does not take the lamp's.
+  EXPECT_EQ(d.image.at(10, kRim - 1).g, 15.f);
+  EXPECT_NEAR(d.image.at(10, kRim + 2).g, 0.1f, 0.02f);
+}
+
 TEST(Denoise, KeepsAlbedoTexture) {
   // A checker of albedo (a brush texture, a stroke's alpha-tested detail) lit evenly:
   // the radiance is albedo * E, and demodulating keeps the checker while the light's

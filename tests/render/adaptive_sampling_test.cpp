@@ -71,7 +71,7 @@ TEST(AdaptiveSampling, MeanMatchesUniformSampling) {
   // that from favouring lucky tiles. Compare the mean over every 16 x 16 tile with a
   // uniform render of independent samples, in units of their combined standard error.
   SceneDesc desc = small_cornell();
-  const Rendered adaptive = render(desc, 128, {0.1, 16});
+  const Rendered adaptive = render(desc, 128, {0.2, 16});
   desc.render.seed += 1;
   const Rendered uniform = render(desc, 128, {});
   ASSERT_LT(adaptive.stats.paths, uniform.stats.paths);
