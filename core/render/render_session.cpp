@@ -101,8 +101,7 @@ void RenderSession::restart_region(int x0, int y0, int x1, int y1) {
   stats_ = {};
   first_pass_ = 0;
   tiles_done_.clear();
-  set_region(x0, y0, x1, y1);
-  reset_adaptive();
+  set_region(x0, y0, x1, y1);  // every tile of the region samples again
   // The region's pixels probe again; those around it keep what they know, which
   // the region's line map reads.
   if (line_pixels_.empty()) return;
