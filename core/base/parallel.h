@@ -11,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <utility>
@@ -69,6 +70,29 @@ void parallel_for_chunks(size_t count, size_t grain, const Body& body, const Can
         if (!cancel.requested()) body(r.begin(), r.end());
       },
       tbb::simple_partitioner());
+}
+
+// Calls row(y) for every y in [0, height), within `pool` when given, else in the
+// caller's arena (whole-image filters: each row writes only its own pixels). True when
+// every row ran; rows not yet started are skipped once `cancel` is requested.
+template <class RowFn>
+bool parallel_rows(int height, ThreadBudget* pool, const RowFn& row_fn, const Cancel& cancel = {}) {
+  std::atomic<int> skipped{0};
+  const auto row = [&](int y) {
+    if (cancel.requested()) {
+      skipped.fetch_add(1, std::memory_order_relaxed);
+    } else {
+      row_fn(y);
+    }
+  };
+  if (pool) {
+    pool->parallel_for(height, [&](int y, int) { row(y); });
+  } else {
+    parallel_for_chunks(size_t(std::max(height, 0)), 1, [&](size_t begin, size_t end) {
+      for (size_t y = begin; y < end; ++y) row(int(y));
+    });
+  }
+  return skipped.load() == 0;
 }
 
 }  // namespace inkray

@@ -42,21 +42,6 @@ struct Features {
   bool normal, depth, albedo, band, object, material;
 };
 
-// Rows in parallel, in the pool when given, else in the caller's arena.
-template <class RowFn>
-bool for_rows(int height, ThreadBudget* pool, const Cancel& cancel, const RowFn& row) {
-  if (pool) {
-    pool->parallel_for(height, [&](int y, int) {
-      if (!cancel.requested()) row(y);
-    });
-  } else {
-    parallel_for_chunks(size_t(std::max(height, 0)), 4, [&](size_t b, size_t e) {
-      for (size_t y = b; y < e; ++y) row(int(y));
-    }, cancel);
-  }
-  return !cancel.requested();
-}
-
 // Squares `x` five times: x^32, a sharp cosine lobe without pow.
 float pow32(float x) {
   x *= x;
@@ -70,7 +55,7 @@ float pow32(float x) {
 std::vector<float> box_blur(const std::vector<float>& v, int w, int h, int r, ThreadBudget* pool,
                             const Cancel& cancel) {
   std::vector<float> tmp(v.size()), out(v.size());
-  for_rows(h, pool, cancel, [&](int y) {
+  parallel_rows(h, pool, [&](int y) {
     const float* row = &v[size_t(y) * size_t(w)];
     for (int x = 0; x < w; ++x) {
       float s = 0.f;
@@ -78,15 +63,15 @@ std::vector<float> box_blur(const std::vector<float>& v, int w, int h, int r, Th
       for (int k = std::max(0, x - r); k <= std::min(w - 1, x + r); ++k, ++n) s += row[k];
       tmp[size_t(y) * size_t(w) + size_t(x)] = s / float(n);
     }
-  });
-  for_rows(h, pool, cancel, [&](int y) {
+  }, cancel);
+  parallel_rows(h, pool, [&](int y) {
     for (int x = 0; x < w; ++x) {
       float s = 0.f;
       int n = 0;
       for (int k = std::max(0, y - r); k <= std::min(h - 1, y + r); ++k, ++n) s += tmp[size_t(k) * size_t(w) + size_t(x)];
       out[size_t(y) * size_t(w) + size_t(x)] = s / float(n);
     }
-  });
+  }, cancel);
   return out;
 }
 
@@ -97,7 +82,7 @@ std::vector<Guide> make_guides(const Film& film, const Features& f, ThreadBudget
   const RgbImage albedo = film.resolve_aov(Aov::albedo), normal = film.resolve_aov(Aov::normal),
                  depth = film.resolve_aov(Aov::depth), band = film.resolve_aov(Aov::toon_band),
                  object = film.resolve_aov(Aov::object_id), material = film.resolve_aov(Aov::material_id);
-  for_rows(h, pool, cancel, [&](int y) {
+  parallel_rows(h, pool, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * size_t(w) + size_t(x);
       Guide& p = g[i];
@@ -121,7 +106,7 @@ std::vector<Guide> make_guides(const Film& film, const Features& f, ThreadBudget
         if (max_component(p.albedo) > 0.f) p.divisor = p.albedo + Color(kDemodulateEps);
       }
     }
-  });
+  }, cancel);
   // A pixel between two edge pixels (along a row, a column or a diagonal) is on the edge
   // too, whichever ids its own samples happened to draw: under a lamp's rim a pixel whose
   // samples all missed the rim's few percent is otherwise cut off from the ones that drew
@@ -211,7 +196,7 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
   std::array<std::vector<float>, 2> var{std::vector<float>(n, 0.f), std::vector<float>(n, 0.f)};
   std::vector<Color> raw_a(n, Color(0.f)), raw_b(n, Color(0.f));
   std::vector<float> share_a(n, 0.5f);  // half a's share of the pixel's samples
-  for_rows(h, pool, cancel, [&](int y) {
+  parallel_rows(h, pool, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * size_t(w) + size_t(x);
       const FilmPixel fp = film.pixel(x, y);
@@ -228,7 +213,7 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
       const float d = luminance(cur[0][i] - cur[1][i]);
       var[0][i] = var[1][i] = 0.5f * d * d;
     }
-  });
+  }, cancel);
 
   // Rung 0: the raw mean. Its cross-validation error is 2 (a - b)^2.
   Denoised result;
@@ -255,7 +240,7 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
       sd[half] = box_blur(var[half], w, h, 1, pool, cancel);
       for (float& s : sd[half]) s = kSigmaColor * std::sqrt(s) + 1e-6f;
     }
-    const bool done = for_rows(h, pool, cancel, [&](int y) {
+    const bool done = parallel_rows(h, pool, [&](int y) {
       for (int x = 0; x < w; ++x) {
         const size_t i = size_t(y) * size_t(w) + size_t(x);
         const Guide& p = g[i];
@@ -298,13 +283,13 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
           next_var[half][i] = vsum[half] / (wsum[half] * wsum[half]);
         }
       }
-    });
+    }, cancel);
     if (!done) return {};
     std::swap(cur, next);
     std::swap(var, next_var);
 
     // Cross-validation: this rung of half a against raw half b, and the other way.
-    for_rows(h, pool, cancel, [&](int y) {
+    parallel_rows(h, pool, [&](int y) {
       for (size_t i = size_t(y) * size_t(w); i < size_t(y + 1) * size_t(w); ++i) {
         if (!g[i].sampled) {
           err[i] = 0.f;
@@ -314,10 +299,10 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
         const float ea = fa - luminance(raw_b[i]), eb = fb - luminance(raw_a[i]);
         err[i] = ea * ea + eb * eb;
       }
-    });
+    }, cancel);
     const std::vector<float> smoothed = box_blur(err, w, h, kErrorRadius, pool, cancel);
     if (cancel.requested()) return {};
-    for_rows(h, pool, cancel, [&](int y) {
+    parallel_rows(h, pool, [&](int y) {
       for (size_t i = size_t(y) * size_t(w); i < size_t(y + 1) * size_t(w); ++i) {
         if (!g[i].sampled || !(smoothed[i] < best_smoothed[i])) continue;
         best_smoothed[i] = smoothed[i];
@@ -328,7 +313,7 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
         const float d = luminance(a) - luminance(b);
         best_diff2[i] = d * d;
       }
-    });
+    }, cancel);
   }
 
   // MSE of one denoised half: err / 2 - Var(half), Var(half) ~ (a - b)^2 / 2. The two

@@ -51,32 +51,10 @@ float judged_value(float linear) {
   return linear_to_srgb(x / (1.f + x));
 }
 
-// True when every row ran; rows not yet started are skipped once cancel is requested.
-// Without a budget the rows run in the caller's arena. Rows write only their own pixels.
-template <class RowFn>
-bool for_rows(int height, ThreadBudget* pool, const RowFn& row_fn, const Cancel& cancel = {}) {
-  std::atomic<int> skipped{0};
-  const auto row = [&](int y) {
-    if (cancel.requested()) {
-      skipped.fetch_add(1, std::memory_order_relaxed);
-    } else {
-      row_fn(y);
-    }
-  };
-  if (pool) {
-    pool->parallel_for(height, [&](int y, int) { row(y); });
-  } else {
-    parallel_for_chunks(size_t(std::max(height, 0)), 1, [&](size_t begin, size_t end) {
-      for (size_t y = begin; y < end; ++y) row(int(y));
-    });
-  }
-  return skipped.load() == 0;
-}
-
 Source prepare_source(const RgbImage& image, ThreadBudget* pool) {
   Source source{std::vector<Texel>(image.pixels.size()), image.width, image.height};
   std::vector<Texel>& texels = source.texels;
-  for_rows(image.height, pool, [&](int y) {
+  parallel_rows(image.height, pool, [&](int y) {
     for (int x = 0; x < image.width; ++x) {
       const Color& c = image.at(x, y);
       Texel& t = texels[size_t(y) * size_t(image.width) + size_t(x)];
@@ -299,7 +277,7 @@ template <int N>
 bool kuwahara_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadBudget* pool,
                    const Cancel& cancel, RgbImage& out) {
   const std::vector<Tap<N>> taps = disc_taps<N>(table, radius);
-  return for_rows(source.height, pool, [&](int y) {
+  return parallel_rows(source.height, pool, [&](int y) {
     for (int x = 0; x < source.width; ++x) {
       const Texel& centre = source.at(x, y);
       SectorSums<N> sums;
@@ -317,7 +295,7 @@ std::vector<Vec3> structure_tensor(const Source& source, ThreadBudget* pool) {
   const int width = source.width, height = source.height;
   const auto judged = [&](int x, int y) { return source.clamped(x, y).judged; };
   std::vector<Vec3> tensor(source.texels.size());
-  for_rows(height, pool, [&](int y) {
+  parallel_rows(height, pool, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const Vec3 fx = (judged(x + 1, y - 1) + 2.f * judged(x + 1, y) + judged(x + 1, y + 1) -
                        judged(x - 1, y - 1) - 2.f * judged(x - 1, y) - judged(x - 1, y + 1)) *
@@ -337,7 +315,7 @@ std::vector<Vec3> structure_tensor(const Source& source, ThreadBudget* pool) {
   for (float& k : kernel) k /= norm;
   std::vector<Vec3> pass(tensor.size());
   for (int axis = 0; axis < 2; ++axis) {
-    for_rows(height, pool, [&](int y) {
+    parallel_rows(height, pool, [&](int y) {
       for (int x = 0; x < width; ++x) {
         Vec3 sum(0.f);
         for (int k = -reach; k <= reach; ++k) {
@@ -422,7 +400,7 @@ bool anisotropic_rows(const Source& source, const SectorTable& table, float radi
                       const Cancel& cancel, RgbImage& out) {
   const std::vector<Vec3> tensor = structure_tensor(source, pool);
   const Weights<N> centre_weights = table.weights<N>(Vec2(0.f));
-  return for_rows(source.height, pool, [&](int y) {
+  return parallel_rows(source.height, pool, [&](int y) {
     for (int x = 0; x < source.width; ++x) {
       const Ellipse ellipse =
           ellipse_from_tensor(tensor[size_t(y) * size_t(source.width) + size_t(x)], radius);
