@@ -8,6 +8,8 @@
 #include "core/materials/shader_eval.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -37,6 +39,9 @@ class Lowering {
 
  private:
   VReg constant(Vec3 v) {
+    // Registers never hold a non-finite value (and NaN would break the map's ordering).
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(v[c])) v[c] = 0.f;
     const auto key = std::array<float, 3>{v.x, v.y, v.z};
     if (const auto it = constant_regs_.find(key); it != constant_regs_.end()) return it->second;
     const VReg r = new_reg();
@@ -76,8 +81,11 @@ class Lowering {
   // The value of node i's input `index`: its link, else its parameter's constant.
   template <class T>
   VReg input(size_t node, const T& desc, size_t index);
-  VReg input(size_t node, std::string_view name);
+  template <class T>
+  ClosureInputBounds bounds(size_t node, const T& desc, size_t index);
   void lower_node(size_t node);
+  void stand_in(size_t node);
+  uint32_t black_leaf();
   std::optional<VReg> closure_input(size_t node, std::string_view name);
   bool output_linked(size_t node, std::string_view output) const {
     for (const GraphLinkDesc& l : g_.links)
@@ -118,9 +126,11 @@ class Lowering {
 struct ValuedInputs {
   std::vector<Vec3> constants;
   std::vector<const ColorInput*> textures;
+  std::vector<Param> params;
   template <class F>
   void operator()(const Param& p, F& field) {
     if (!socket_type_of(p.kind)) return;
+    params.push_back(p);
     const ColorInput* texture = nullptr;
     Vec3 value(0.f);
     if constexpr (std::is_same_v<F, float>) {
@@ -139,21 +149,82 @@ struct ValuedInputs {
   }
 };
 
+// A parameter's hard range as floats (an infinite bound stays finite: registers hold finite values).
+std::pair<float, float> float_range(const Param& p) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  return {float(std::clamp(p.min, -kMax, kMax)), float(std::clamp(p.max, -kMax, kMax))};
+}
+
+// A value within the parameter's hard range, channel by channel (a number's three
+// channels are one splatted value); a channel that is not finite takes the default's.
+Vec3 within_range(const Param& p, const Vec3& v, const Vec3& fallback) {
+  const auto [lo, hi] = float_range(p);
+  Vec3 out;
+  for (int c = 0; c < 3; ++c) out[c] = std::isfinite(v[c]) ? std::clamp(v[c], lo, hi) : fallback[c];
+  return out;
+}
+
+template <class T>
+ValuedInputs valued_inputs_of(const T& desc) {
+  ValuedInputs valued;
+  visit_params(const_cast<T&>(desc), valued);  // the visitor only reads
+  return valued;
+}
+
 template <class T>
 VReg Lowering::input(size_t node, const T& desc, size_t index) {
   const SocketInfo& socket = c_.inputs[node][index];
   if (const auto& e = c_.incoming[node][index]) {
     const auto it = outputs_.find({e->from, e->output});
+    if (it == outputs_.end()) return constant(Vec3(0.f));  // stand_in gives every output a value
     return convert(it->second, socket.type);
   }
   if (!socket.has_value) {
     if (socket.implicit != Implicit::none) return implicit(socket.implicit);
     return constant(Vec3(socket.type == SocketType::float_value ? 1.f : 0.f));
   }
-  ValuedInputs valued;
-  visit_params(const_cast<T&>(desc), valued);  // the visitor only reads
+  // Unlinked: the node's own value, kept to the parameter's range like a typed value
+  // in the editor (a description built in code may hold anything).
+  const ValuedInputs valued = valued_inputs_of(desc);
   if (valued.textures[index]) return color_input_texture(node, *valued.textures[index]);
-  return constant(valued.constants[index]);
+  const ValuedInputs defaults = valued_inputs_of(T{});
+  return constant(within_range(valued.params[index], valued.constants[index], defaults.constants[index]));
+}
+
+// A closure's input `index`: linked, or a constant, it is kept to the parameter's hard
+// range; an unlinked texture only non-negative (an HDR texel may exceed a colour's range).
+template <class T>
+ClosureInputBounds Lowering::bounds(size_t node, const T& desc, size_t index) {
+  const ValuedInputs defaults = valued_inputs_of(T{});
+  const Param& p = defaults.params[index];
+  const auto [lo, hi] = float_range(p);
+  ClosureInputBounds b{lo, hi, within_range(p, defaults.constants[index], Vec3(std::max(lo, 0.f)))};
+  if (!c_.incoming[node][index] && valued_inputs_of(desc).textures[index])
+    b.min = 0.f, b.max = std::numeric_limits<float>::max();
+  return b;
+}
+
+// An unlinked side of a mix or add: a black surface that ends the path. It has no
+// inputs, so materialise leaves its template as it is.
+uint32_t Lowering::black_leaf() {
+  leaves_.push_back({UnlitMaterial{ConstantTexture{Color(0.f)}}, {}, {}, true});
+  leaf_inputs_.emplace_back();
+  closures_.push_back({ClosureNode::Kind::leaf, uint16_t(leaves_.size() - 1)});
+  mix_fac_.push_back(kNone);
+  return uint32_t(closures_.size() - 1);
+}
+
+// A node that failed (its message is out) still gives its outputs values, so the nodes
+// downstream are lowered and report their own problems: zeros, and a black surface.
+void Lowering::stand_in(size_t node) {
+  const auto outs = node_outputs(g_.nodes[node].data);
+  for (size_t k = 0; k < outs.size(); ++k) {
+    if (outs[k].type == SocketType::closure) {
+      if (!closure_of_.count(node)) closure_of_[node] = black_leaf();
+    } else if (!outputs_.count({node, k})) {
+      outputs_[{node, k}] = Value{constant(Vec3(0.f)), outs[k].type};
+    }
+  }
 }
 
 VReg Lowering::color_input_texture(size_t node, const ColorInput& in) {
@@ -178,7 +249,10 @@ std::optional<VReg> Lowering::closure_input(size_t node, std::string_view name) 
   const auto& ins = c_.inputs[node];
   for (size_t i = 0; i < ins.size(); ++i) {
     if (ins[i].name != name) continue;
-    if (const auto& e = c_.incoming[node][i]) return closure_of_.at(e->from);
+    if (const auto& e = c_.incoming[node][i]) {
+      const auto it = closure_of_.find(e->from);
+      if (it != closure_of_.end()) return it->second;
+    }
     return std::nullopt;
   }
   return std::nullopt;
@@ -204,9 +278,9 @@ void Lowering::lower_node(size_t node) {
             (i == 1 ? line_color_ : i == 2 ? line_width_ : stroke_color_) = r;
           }
         } else if constexpr (std::is_same_v<T, ValueNode>) {
-          out(0, constant(Vec3(d.value)), SocketType::float_value);
+          out(0, in(0), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, RgbNode>) {
-          out(0, constant(d.color), SocketType::color);
+          out(0, in(0), SocketType::color);
         } else if constexpr (std::is_same_v<T, ImageTextureNode>) {
           std::string error;
           auto image = assets_.image(base_ / d.path, d.srgb, &error);
@@ -230,7 +304,7 @@ void Lowering::lower_node(size_t node) {
         } else if constexpr (std::is_same_v<T, NoiseNode>) {
           const VReg scale = in(0), rough = in(1), distortion = in(2), p = in(3);
           const auto mode = uint8_t(d.noise);
-          const auto oct = uint32_t(d.octaves);
+          const auto oct = uint32_t(std::clamp(d.octaves, 1, 16));  // the parameter's range
           out(0, emit(ShaderOp::noise_fac, {p, scale, rough, distortion}, mode, oct),
                                SocketType::float_value);
           out(1, emit(ShaderOp::noise_color, {p, scale, rough, distortion}, mode, oct),
@@ -242,7 +316,13 @@ void Lowering::lower_node(size_t node) {
           out(2, emit(ShaderOp::voronoi_position, {p, scale, randomness}), SocketType::vector);
         } else if constexpr (std::is_same_v<T, ColorRampNode>) {
           std::vector<RampStop> stops;
-          for (const RampStopDesc& s : d.stops) stops.push_back({s.position, s.color});
+          // Stops kept to their parameters' ranges, so the sort below sees no NaN.
+          for (const RampStopDesc& s : d.stops)
+            stops.push_back({std::isfinite(s.position) ? std::clamp(s.position, 0.f, 1.f) : 0.f,
+                             glm::clamp(Vec3(std::isfinite(s.color.x) ? s.color.x : 0.f,
+                                             std::isfinite(s.color.y) ? s.color.y : 0.f,
+                                             std::isfinite(s.color.z) ? s.color.z : 0.f),
+                                        Vec3(0.f), Vec3(1e6f))});
           std::stable_sort(stops.begin(), stops.end(),
                            [](const RampStop& a, const RampStop& b) { return a.position < b.position; });
           program_->ramps.push_back(std::move(stops));
@@ -301,12 +381,7 @@ void Lowering::lower_node(size_t node) {
         } else if constexpr (std::is_same_v<T, MixClosureNode> || std::is_same_v<T, AddClosureNode>) {
           const auto side = [&](std::string_view name) -> uint32_t {
             if (auto c = closure_input(node, name)) return *c;
-            // An unlinked side is a black surface that ends the path.
-            leaves_.push_back({UnlitMaterial{ConstantTexture{Color(0.f)}}, {}});
-            leaf_inputs_.emplace_back();
-            closures_.push_back({ClosureNode::Kind::leaf, uint16_t(leaves_.size() - 1)});
-            mix_fac_.push_back(kNone);
-            return uint32_t(closures_.size() - 1);
+            return black_leaf();
           };
           ClosureNode cn;
           cn.a = uint16_t(side("a"));
@@ -327,9 +402,13 @@ void Lowering::lower_node(size_t node) {
           auto tmpl = compile_closure_template(MaterialVariant(d), base_, assets_, &error);
           if (!tmpl) return fail(node, error);
           std::vector<VReg> regs;
-          for (size_t i = 0; i < c_.inputs[node].size(); ++i)
-            if (c_.inputs[node][i].has_value) regs.push_back(convert({in(i), c_.inputs[node][i].type}, c_.inputs[node][i].type));
-          leaves_.push_back({std::move(*tmpl), {}});
+          std::vector<ClosureInputBounds> leaf_bounds;
+          for (size_t i = 0; i < c_.inputs[node].size(); ++i) {
+            if (!c_.inputs[node][i].has_value) continue;
+            regs.push_back(in(i));
+            leaf_bounds.push_back(bounds(node, d, i));
+          }
+          leaves_.push_back({std::move(*tmpl), {}, std::move(leaf_bounds)});
           leaf_inputs_.push_back(std::move(regs));
           closures_.push_back({ClosureNode::Kind::leaf, uint16_t(leaves_.size() - 1)});
           mix_fac_.push_back(kNone);
@@ -477,7 +556,9 @@ std::shared_ptr<ShaderProgram> Lowering::allocate() {
 std::shared_ptr<const ShaderProgram> Lowering::run() {
   const size_t before = errors_.size();
   for (size_t node : c_.order) {
+    const size_t errors_before = errors_.size();
     lower_node(node);
+    if (errors_.size() > errors_before) stand_in(node);
     if (closures_.size() > kMaxClosures) {
       errors_.push_back("the graph has more than " + std::to_string(kMaxClosures) +
                         " closures reaching its output (simplify the graph)");

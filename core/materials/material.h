@@ -63,6 +63,7 @@ using Material = std::variant<DiffuseMaterial, ConductorMaterial, DielectricMate
 struct ClosureLeaf {
   Material tmpl;
   std::vector<uint16_t> inputs;
+  std::vector<ClosureInputBounds> bounds;  // one per input (shader_program.h)
   bool constant = false;  // every input is a constant: tmpl already holds them and is used as it is
 };
 

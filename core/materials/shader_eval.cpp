@@ -79,7 +79,7 @@ Color image_lookup(const RgbImage& img, const std::vector<float>* alpha, Vec3 uv
 
 float hash_to_unit(uint32_t v) { return u32_to_unit_float(hash_u32(v)); }
 
-// Keeps a closure input finite and within what its material accepts.
+// An output override colour: registers are finite; lines and strokes take no negative colour.
 Color input_color(const Vec3& v) { return glm::max(v, Vec3(0.f)); }
 
 }  // namespace
@@ -188,42 +188,66 @@ void run_shader(const ShaderProgram& program, const ShadingPoint& sp, ShaderRegi
   }
 }
 
-// The valued inputs are in the order compile_graph stored them (the description's parameter order).
+// The valued inputs are in the order compile_graph stored them (the description's
+// parameter order), each with its parameter's hard range and default. A leaf with
+// fewer inputs than its kind reads (the black stand-in of an unlinked closure input
+// has none) is its template as it is.
 void materialise(const ClosureLeaf& leaf, const Vec3* r, Material& scratch) {
-  const auto reg = [&](size_t i) -> const Vec3& { return r[leaf.inputs[i]]; };
-  const auto num = [&](size_t i, float lo, float hi) { return std::clamp(r[leaf.inputs[i]].x, lo, hi); };
   scratch = leaf.tmpl;
+  const size_t count = std::min(leaf.inputs.size(), leaf.bounds.size());
+  const auto value = [&](size_t i) {
+    const ClosureInputBounds& b = leaf.bounds[i];
+    const Vec3& v = r[leaf.inputs[i]];
+    Vec3 out;
+    for (int c = 0; c < 3; ++c) out[c] = std::isfinite(v[c]) ? std::clamp(v[c], b.min, b.max) : b.fallback[c];
+    return out;
+  };
+  const auto num = [&](size_t i) { return value(i).x; };
+  const auto tex = [&](size_t i) { return Texture{ConstantTexture{value(i)}}; };
   std::visit(Overloaded{
-                 [&](DiffuseMaterial& m) { m.albedo = ConstantTexture{input_color(reg(0))}; },
+                 [&](DiffuseMaterial& m) {
+                   if (count < 1) return;
+                   m.albedo = tex(0);
+                 },
                  [&](ConductorMaterial& m) {
-                   m.color = ConstantTexture{input_color(reg(0))};
-                   m.alpha = sqr(num(1, 0.f, 1.f));
+                   if (count < 2) return;
+                   m.color = tex(0);
+                   m.alpha = sqr(num(1));
                  },
                  [&](DielectricMaterial& m) {
-                   m.bsdf.eta = num(0, 1.0001f, 4.f);
-                   m.bsdf.alpha = sqr(num(1, 0.f, 1.f));
-                   m.bsdf.tint = input_color(reg(2));
+                   if (count < 3) return;
+                   m.bsdf.eta = num(0);
+                   m.bsdf.alpha = sqr(num(1));
+                   m.bsdf.tint = value(2);
                  },
                  [&](EmissiveMaterial& m) {
-                   m.color = ConstantTexture{input_color(reg(0))};
-                   m.strength = std::max(reg(1).x, 0.f);
+                   if (count < 2) return;
+                   m.color = tex(0);
+                   m.strength = num(1);
                  },
-                 [&](UnlitMaterial& m) { m.color = ConstantTexture{input_color(reg(0))}; },
-                 [&](TransparentMaterial& m) { m.tint = input_color(reg(0)); },
+                 [&](UnlitMaterial& m) {
+                   if (count < 1) return;
+                   m.color = tex(0);
+                 },
+                 [&](TransparentMaterial& m) {
+                   if (count < 1) return;
+                   m.tint = value(0);
+                 },
                  [&](ToonMaterial& m) {
-                   m.color = ConstantTexture{input_color(reg(0))};
-                   m.shadow_color = input_color(reg(1));
-                   m.threshold = num(2, 0.f, 1.f);
-                   m.softness = num(3, 0.f, 0.5f);
-                   m.ramp_near = std::max(reg(4).x, 0.f);
-                   m.ramp_far = std::max(reg(5).x, 0.f);
-                   m.specular_color = input_color(reg(6));
-                   m.specular_size = num(7, 0.f, 1.f);
-                   m.shininess = num(8, 1.f, 1e4f);
-                   m.rim_color = input_color(reg(9));
-                   m.rim_width = num(10, 0.f, 1.f);
-                   m.rim_threshold = num(11, 0.f, 1.f);
-                   m.environment = std::max(reg(12).x, 0.f);
+                   if (count < kToonClosureInputs.size()) return;
+                   m.color = tex(0);
+                   m.shadow_color = value(1);
+                   m.threshold = num(2);
+                   m.softness = num(3);
+                   m.ramp_near = num(4);
+                   m.ramp_far = num(5);
+                   m.specular_color = value(6);
+                   m.specular_size = num(7);
+                   m.shininess = num(8);
+                   m.rim_color = value(9);
+                   m.rim_width = num(10);
+                   m.rim_threshold = num(11);
+                   m.environment = num(12);
                  },
                  // Graph compilation makes no leaf of these.
                  [](MixMaterial&) {},

@@ -28,8 +28,10 @@ inline ResolvedMaterial pick_closure(const ShaderProgram& program, const ShaderR
                                      Material& scratch) {
   return pick_closure(program, registers.data(), u, scratch);
 }
-// Copies the leaf's template into `out` and sets its inputs from the registers (the
-// compiler uses it to fill constant leaves).
+// Copies the leaf's template into `out` and sets its inputs from the registers, each
+// clamped to its parameter's hard range and a non-finite one replaced by the default
+// (ClosureInputBounds); a leaf without inputs is its template. The compiler uses it to
+// fill constant leaves.
 void materialise(const ClosureLeaf& leaf, const Vec3* registers, Material& out);
 // Runs the program if it has code and picks the closure: what resolve_material does for a graph.
 ResolvedMaterial run_graph(const ShaderProgram& program, const ShadingPoint& sp, float u, Material& scratch);

@@ -18,6 +18,14 @@ namespace inkray {
 
 struct ClosureLeaf;  // material.h: a closure's compiled template and where its inputs are
 
+// What a closure accepts at one valued input (docs/architecture.md, "Material graphs"):
+// a linked value is clamped to the parameter's hard range per channel, and a value
+// that is not finite becomes the parameter's default.
+struct ClosureInputBounds {
+  float min = 0.f, max = 0.f;
+  Vec3 fallback{0.f};
+};
+
 enum class ShaderOp : uint8_t {
   // conversions between socket types
   luminance, mean, clamp01,
