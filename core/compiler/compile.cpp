@@ -11,6 +11,7 @@
 #include "core/compiler/compile_strokes.h"
 #include "core/document/memory_budget.h"
 #include "core/document/scene_checks.h"
+#include "core/geometry/instance_placement.h"
 
 #include <algorithm>
 #include <map>
@@ -270,6 +271,14 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
       result.errors.push_back(where + "no material named \"" + obj.material + "\"");
       continue;
     }
+    // At a frame where its scale is zero (an animated flip) an object that stands still
+    // is not there: no surface, light or strokes. One that moves is traced over the rest
+    // of the shutter (docs/architecture.md, "Singular transforms").
+    if (!placeable(transform_from_desc(obj.transform)) &&
+        (!moves(shutter, i) || motion_pieces(transform_from_desc(shutter->open.objects[i].transform),
+                                             transform_from_desc(shutter->close.objects[i].transform))
+                                   .empty()))
+      continue;
     std::string key, error;
     const auto placed = place_object(obj, objects, &key, &error);
     if (!placed) {

@@ -1,11 +1,11 @@
 #include "core/geometry/embree_scene.h"
 
 #include "core/geometry/embree_device.h"
+#include "core/geometry/instance_placement.h"
 #include "core/math/float_error.h"
 #include "core/math/hash.h"
 
 #include <embree3/rtcore.h>
-#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <array>
@@ -105,6 +105,14 @@ struct QueryContext {
   // instance then), or kNoInstance when it asks the top level.
   uint32_t instance = kNoInstance;
   static constexpr uint32_t kNoInstance = ~0u;
+  // Embree's instance id to the instance's index: an instance traced in pieces
+  // (motion_pieces) has ids from `first_piece` on for its further pieces.
+  const uint32_t* piece_owner = nullptr;
+  uint32_t first_piece = kNoInstance;
+
+  QueryContext(const std::vector<uint32_t>& owners, size_t instances)
+      : piece_owner(owners.data()), first_piece(uint32_t(instances)) {}
+  uint32_t instance_of(uint32_t id) const { return id < first_piece ? id : piece_owner[id - first_piece]; }
 };
 
 // The triangle and its barycentrics at (u, v) of quad q (AlphaMask::quads):
@@ -136,7 +144,8 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
     // Resolving paint order: only paint painted after the best so far matters,
     // and every hit is refused so the query looks on.
     const uint32_t direct = reinterpret_cast<const QueryContext*>(args->context)->instance;
-    const uint32_t instance = direct != QueryContext::kNoInstance ? direct : args->context->instID[0];
+    const auto* query = reinterpret_cast<const QueryContext*>(args->context);
+    const uint32_t instance = direct != QueryContext::kNoInstance ? direct : query->instance_of(args->context->instID[0]);
     args->valid[0] = 0;
     if (paint->found && (instance < paint->instance || (instance == paint->instance && prim <= paint->prim)))
       return;
@@ -287,61 +296,6 @@ std::array<float, 12> embree_transform(const Transform& t) {
   return xfm;
 }
 
-// An affine transform as Embree's T R S (RTCQuaternionDecomposition): the linear part
-// is split by Gram-Schmidt into a rotation R (a proper one: a reflection stays in S)
-// and an upper triangular S of scales and shears, so any transform of a document
-// (scale, rotations, translation) and any product of them decomposes.
-struct Decomposition {
-  glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
-  glm::dmat3 upper{1.0};  // S, column-major: upper[column][row]
-  glm::dvec3 translation{0.0};
-};
-
-Decomposition decompose(const Transform& t) {
-  const glm::dmat3 linear(glm::dmat4(t.m));
-  Decomposition d;
-  glm::dmat3 q(0.0);
-  for (int c = 0; c < 3; ++c) {
-    glm::dvec3 v = linear[c];
-    for (int k = 0; k < c; ++k) {  // modified Gram-Schmidt: stable for near-parallel columns
-      d.upper[c][k] = glm::dot(q[k], v);
-      v -= d.upper[c][k] * q[k];
-    }
-    const double len = glm::length(v);
-    d.upper[c][c] = len;
-    q[c] = len > 0.0 ? v / len : glm::dvec3(c == 0, c == 1, c == 2);
-    for (int k = c + 1; k < 3; ++k) d.upper[c][k] = 0.0;
-  }
-  if (glm::determinant(q) < 0.0) {  // a reflection: its sign moves into S's last scale
-    q[2] = -q[2];
-    d.upper[2][2] = -d.upper[2][2];
-  }
-  d.rotation = glm::normalize(glm::quat_cast(q));
-  d.translation = glm::dvec3(glm::dvec4(t.m[3]));
-  return d;
-}
-
-RTCQuaternionDecomposition embree_decomposition(const Decomposition& d) {
-  RTCQuaternionDecomposition qd;
-  rtcInitQuaternionDecomposition(&qd);
-  rtcQuaternionDecompositionSetScale(&qd, float(d.upper[0][0]), float(d.upper[1][1]), float(d.upper[2][2]));
-  rtcQuaternionDecompositionSetSkew(&qd, float(d.upper[1][0]), float(d.upper[2][0]), float(d.upper[2][1]));
-  rtcQuaternionDecompositionSetQuaternion(&qd, float(d.rotation.w), float(d.rotation.x), float(d.rotation.y),
-                                          float(d.rotation.z));
-  rtcQuaternionDecompositionSetTranslation(&qd, float(d.translation.x), float(d.translation.y),
-                                           float(d.translation.z));
-  return qd;
-}
-
-// The two time steps of a moving instance: the decompositions of `open` and `close`,
-// the second's quaternion on the first's side, so the slerp takes the short way round.
-std::array<RTCQuaternionDecomposition, 2> motion_steps(const Transform& open, const Transform& close) {
-  const Decomposition a = decompose(open);
-  Decomposition b = decompose(close);
-  if (glm::dot(a.rotation, b.rotation) < 0.0) b.rotation = -b.rotation;
-  return {embree_decomposition(a), embree_decomposition(b)};
-}
-
 // A transform from Embree's 3x4 column-major form.
 Transform from_embree(const std::array<float, 12>& xfm) {
   Mat4 m(1.f);
@@ -436,8 +390,8 @@ ShapeBvh::ShapeBvh(std::shared_ptr<const Shape> shape, std::shared_ptr<const Alp
 ShapeBvh::~ShapeBvh() { rtcReleaseScene(scene_); }
 
 EmbreeScene::Impl::~Impl() {
-  for (RTCGeometry geom : motion)
-    if (geom) rtcReleaseGeometry(geom);
+  for (const auto& pieces : motion)
+    for (const MotionGeometry& piece : pieces) rtcReleaseGeometry(piece.geom);
   if (scene) rtcReleaseScene(scene);
 }
 
@@ -476,32 +430,53 @@ void EmbreeScene::commit() {
   // Few instances, rebuilt on every move of an object: a fast build matters more
   // than the last few percent of traversal speed, which the bottom levels decide.
   impl_->scene = new_embree_scene(RTC_BUILD_QUALITY_MEDIUM);
-  impl_->motion.assign(impl_->instances.size(), nullptr);
+  impl_->motion.assign(impl_->instances.size(), {});
+  const auto attached = [&](RTCGeometry geom, uint32_t id) {
+    // The first geometry of an instance goes by the instance's index; the further pieces
+    // of one that is traced in pieces go by indices after the last instance.
+    uint32_t geom_id = id;
+    if (!impl_->motion[id].empty() && impl_->motion[id].front().geom != geom) {
+      geom_id = uint32_t(impl_->instances.size() + impl_->piece_owner.size());
+      impl_->piece_owner.push_back(id);
+    }
+    const AlphaMask* mask = impl_->instances[id].bvh->mask();
+    const bool paint = mask && mask->paint;
+    rtcSetGeometryMask(geom, !paint ? kSolid : impl_->instances[id].indirect ? kPaint | kPaintIndirect : kPaint);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometryByID(impl_->scene, geom, geom_id);
+  };
   for (uint32_t id = 0; id < impl_->instances.size(); ++id) {
     const Instance& instance = impl_->instances[id];
-    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(geom, instance.bvh->embree_scene());
     if (!instance.moving) {
       // What does not move has one time step: rays ignore their time there, and a
-      // scene without moving shapes is traced exactly as without motion blur.
-      rtcSetGeometryTimeStepCount(geom, 1);
-      const std::array<float, 12> xfm = embree_transform(instance.to_world);
-      rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
+      // scene without moving shapes is traced exactly as without motion blur. A
+      // singular placement is not traced at all (docs/architecture.md, "Singular transforms").
+      if (placeable(instance.to_world)) {
+        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(geom, instance.bvh->embree_scene());
+        rtcSetGeometryTimeStepCount(geom, 1);
+        const std::array<float, 12> xfm = embree_transform(instance.to_world);
+        rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
+        attached(geom, id);
+        rtcReleaseGeometry(geom);
+      }
     } else {
-      rtcSetGeometryTimeStepCount(geom, 2);
-      const std::array<RTCQuaternionDecomposition, 2> steps = motion_steps(instance.to_world, instance.to_close);
-      rtcSetGeometryTransformQuaternion(geom, 0, &steps[0]);
-      rtcSetGeometryTransformQuaternion(geom, 1, &steps[1]);
-      rtcRetainGeometry(geom);
-      impl_->motion[id] = geom;
       impl_->any_moving = true;
+      // Each piece of the shutter over which the placement stays invertible is an
+      // Embree instance of two time steps present only over that piece.
+      for (const MotionPiece& piece : motion_pieces(instance.to_world, instance.to_close)) {
+        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(geom, instance.bvh->embree_scene());
+        rtcSetGeometryTimeStepCount(geom, 2);
+        rtcSetGeometryTransformQuaternion(geom, 0, &piece.at_start);
+        rtcSetGeometryTransformQuaternion(geom, 1, &piece.at_end);
+        if (piece.start != 0.f || piece.end != 1.f) rtcSetGeometryTimeRange(geom, piece.start, piece.end);
+        impl_->motion[id].push_back({piece.start, piece.end, geom});  // keeps the reference
+        attached(geom, id);
+      }
     }
     const AlphaMask* mask = instance.bvh->mask();
     const bool paint = mask && mask->paint;
-    rtcSetGeometryMask(geom, !paint ? kSolid : instance.indirect ? kPaint | kPaintIndirect : kPaint);
-    rtcCommitGeometry(geom);
-    rtcAttachGeometryByID(impl_->scene, geom, id);
-    rtcReleaseGeometry(geom);
     if (paint) {
       impl_->camera_paint.push_back(id);
       impl_->camera_layer = std::max(impl_->camera_layer, mask->layer_thickness);
@@ -537,14 +512,21 @@ bool EmbreeScene::same_instances(const EmbreeScene& other) const {
 Transform EmbreeScene::placement(uint32_t index, float time) const {
   const Instance& instance = impl_->instances[index];
   if (!instance.moving) return instance.to_world;
+  // The piece traced at that instant, or the nearest: a hit is never where none is.
+  const auto& pieces = impl_->motion[index];
+  if (pieces.empty()) return instance.to_world;
+  time = glm::clamp(time, 0.f, 1.f);
+  const Impl::MotionGeometry* piece = &pieces.front();
+  for (const Impl::MotionGeometry& p : pieces)
+    if (time >= p.start) piece = &p;
   std::array<float, 12> xfm{};
-  rtcGetGeometryTransform(impl_->motion[index], glm::clamp(time, 0.f, 1.f), RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR,
+  rtcGetGeometryTransform(piece->geom, glm::clamp(time, piece->start, piece->end), RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR,
                           xfm.data());
   return from_embree(xfm);
 }
 
 bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind) const {
-  QueryContext context;
+  QueryContext context(impl_->piece_owner, impl_->instances.size());
   rtcInitIntersectContext(&context.rtc);
   if (!traceable(ray, t_max)) return false;
   RTCRayHit rh{};
@@ -559,7 +541,7 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind)
   rtcIntersect1(impl_->scene, &context.rtc, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   hit->t = rh.ray.tfar;
-  hit->geometry = rh.hit.instID[0];
+  hit->geometry = context.instance_of(rh.hit.instID[0]);
   hit->prim = rh.hit.primID;
   hit->barycentric = {rh.hit.u, rh.hit.v};
   const ShapeBvh& bvh = *impl_->instances[hit->geometry].bvh;
@@ -612,7 +594,7 @@ void EmbreeScene::paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) con
   if (!(d_len > 0.f) || !(ng_len > 0.f)) return;
   const float cos_theta = std::abs(glm::dot(ray.d, n)) / (d_len * ng_len);
   const float reach = impl_->camera_layer / (std::max(cos_theta, 0.05f) * d_len);
-  QueryContext context;
+  QueryContext context(impl_->piece_owner, impl_->instances.size());
   rtcInitIntersectContext(&context.rtc);
   PaintHit top;
   top.found = false;
@@ -642,7 +624,7 @@ void EmbreeScene::resolve_paint(const Ray& ray, float layer_thickness, const Vec
   const float cos_theta = std::abs(glm::dot(ray.d, ng)) / (d_len * ng_len);
   const float reach = layer_thickness / (std::max(cos_theta, 0.05f) * d_len);
   // The same ray, so every alpha test decides as it did, over that stretch only.
-  QueryContext context;
+  QueryContext context(impl_->piece_owner, impl_->instances.size());
   rtcInitIntersectContext(&context.rtc);
   PaintHit top{hit->geometry, hit->prim, hit->t, hit->barycentric.x, hit->barycentric.y};
   context.paint = &top;
@@ -666,7 +648,7 @@ void EmbreeScene::resolve_paint(const Ray& ray, float layer_thickness, const Vec
 }
 
 bool EmbreeScene::occluded(const Ray& ray, float t_max) const {
-  QueryContext context;
+  QueryContext context(impl_->piece_owner, impl_->instances.size());
   rtcInitIntersectContext(&context.rtc);
   if (!traceable(ray, t_max)) return false;
   RTCRay r = to_rtc(ray, t_max);

@@ -139,9 +139,15 @@ class EmbreeScene {
   };
   struct Impl {
     std::vector<Instance> instances;
-    // The Embree instance of each moving shape (null for the others), kept to ask it
-    // where it stands at a time.
-    std::vector<RTCGeometryTy*> motion;
+    // The Embree instances of each moving shape, one per piece of the shutter it is
+    // traced over (none for the others), kept to ask where it stands at a time.
+    struct MotionGeometry {
+      float start = 0.f, end = 1.f;
+      RTCGeometryTy* geom = nullptr;
+    };
+    std::vector<std::vector<MotionGeometry>> motion;
+    // The instance each further piece belongs to: Embree ids from instances.size() on.
+    std::vector<uint32_t> piece_owner;
     bool any_moving = false;
     // Paint seen by camera rays, and by indirect rays, in instance order, when
     // every paint instance is placed by the identity (strokes are built in world
