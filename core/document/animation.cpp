@@ -7,10 +7,32 @@
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
+#include <unordered_map>
 
 namespace inkray {
+
+// Where each named entry of the document's lists is, by its name (the first entry
+// of a name, as a search would find): built once for a pass over many tracks, so
+// resolving them costs a lookup each, not a search of the list.
+struct AnimationNames {
+  using Map = std::unordered_map<std::string_view, size_t>;
+  Map objects, lights, materials, strokes;
+  explicit AnimationNames(const SceneDesc& desc) {
+    fill(objects, desc.objects);
+    fill(lights, desc.lights);
+    fill(materials, desc.materials);
+    fill(strokes, desc.strokes);
+  }
+  template <class Item>
+  static void fill(Map& map, const std::vector<Item>& items) {
+    map.reserve(items.size());
+    for (size_t i = 0; i < items.size(); ++i) map.emplace(items[i].name, i);
+  }
+};
+
 namespace {
 
+using NameIndex = AnimationNames;
 using Path = std::span<const std::string_view>;
 
 // Render settings that shape the shot itself: keyed, they would change what a frame is.
@@ -38,6 +60,7 @@ struct Access {
   std::span<const double> in;
   std::optional<Param> found;
   std::string error;
+  const NameIndex* names = nullptr;  // null: entries are searched for
 };
 
 template <class T>
@@ -141,7 +164,11 @@ void descend(Access& a, const Param& p, T& field, Path rest) {
 }
 
 template <class Item>
-Item* by_name(std::vector<Item>& items, std::string_view name) {
+Item* by_name(std::vector<Item>& items, std::string_view name, const NameIndex::Map* index) {
+  if (index) {
+    const auto found = index->find(name);
+    return found == index->end() ? nullptr : &items[found->second];
+  }
   for (Item& item : items)
     if (item.name == name) return &item;
   return nullptr;
@@ -176,12 +203,13 @@ void descend_transform(Access& a, TransformDesc& t, Path rest) {
 }
 
 template <class Item, class Next>
-void named(Access& a, std::vector<Item>& items, Path rest, std::string_view section, Next next) {
+void named(Access& a, std::vector<Item>& items, const NameIndex::Map NameIndex::*index, Path rest,
+           std::string_view section, Next next) {
   if (rest.empty()) {
     a.error = in_quotes(section) + " needs a name: " + std::string(section) + "/NAME/...";
     return;
   }
-  Item* item = by_name(items, rest[0]);
+  Item* item = by_name(items, rest[0], a.names ? &(a.names->*index) : nullptr);
   if (!item) {
     a.error = "no entry named " + in_quotes(rest[0]) + " in " + in_quotes(section);
     return;
@@ -210,18 +238,18 @@ void resolve(SceneDesc& desc, std::string_view path, Access& a) {
   if (head == "outlines") return descend_struct(a, desc.outlines, rest, "outlines");
   if (head == "environment") return descend(a, group("environment", ""), desc.environment, rest);
   if (head == "objects") {
-    return named(a, desc.objects, rest, "objects", [&](ObjectDesc& o, Path r) {
+    return named(a, desc.objects, &NameIndex::objects, rest, "objects", [&](ObjectDesc& o, Path r) {
       if (r[0] == "transform") return descend_transform(a, o.transform, r.subspan(1));
       if (r[0] == "shape") return descend(a, group("shape", ""), o.shape, r.subspan(1));
       descend_struct(a, o, r, o.name);
     });
   }
   if (head == "lights") {
-    return named(a, desc.lights, rest, "lights",
+    return named(a, desc.lights, &NameIndex::lights, rest, "lights",
                  [&](LightDesc& l, Path r) { descend(a, group(l.name, ""), l.data, r); });
   }
   if (head == "materials") {
-    return named(a, desc.materials, rest, "materials", [&](MaterialDesc& m, Path r) {
+    return named(a, desc.materials, &NameIndex::materials, rest, "materials", [&](MaterialDesc& m, Path r) {
       if (r[0] == "lines") return descend(a, group("lines", ""), m.lines, r.subspan(1));
       if (auto* graph = std::get_if<GraphDesc>(&m.data)) {
         if (r[0] != "nodes" || r.size() < 3) {
@@ -237,7 +265,7 @@ void resolve(SceneDesc& desc, std::string_view path, Access& a) {
     });
   }
   if (head == "strokes") {
-    return named(a, desc.strokes, rest, "strokes", [&](StrokeEmitterDesc& e, Path r) {
+    return named(a, desc.strokes, &NameIndex::strokes, rest, "strokes", [&](StrokeEmitterDesc& e, Path r) {
       if (r[0] == "name" || r[0] == "object" || r[0] == "count" || r[0] == "seed") {
         // A stroke keeps its place and looks from frame to frame: what decides which
         // strokes exist is not animated.
@@ -314,12 +342,40 @@ int key_width(ParamKind kind) {
   }
 }
 
-std::optional<Param> animation_target(const SceneDesc& desc, std::string_view path, std::string* error) {
+namespace {
+
+std::optional<Param> probe(const SceneDesc& desc, std::string_view path, std::string* error,
+                           const NameIndex* names) {
   Access a;
+  a.names = names;
   // Probing only reads; the resolver is written once for both directions.
   resolve(const_cast<SceneDesc&>(desc), path, a);
   if (!a.found && error) *error = a.error.empty() ? "cannot resolve " + in_quotes(path) : a.error;
   return a.found;
+}
+
+bool write(SceneDesc& desc, std::string_view path, std::span<const double> value, const NameIndex* names) {
+  const std::optional<Param> p = probe(desc, path, nullptr, names);
+  if (!p || value.size() != size_t(key_width(p->kind))) return false;
+  Access a;
+  a.op = Access::Op::write;
+  a.in = value;
+  a.names = names;
+  resolve(desc, path, a);
+  return a.found.has_value();
+}
+
+}  // namespace
+
+std::optional<Param> animation_target(const SceneDesc& desc, std::string_view path, std::string* error) {
+  return probe(desc, path, error, nullptr);
+}
+
+TargetResolver::TargetResolver(const SceneDesc& desc) : desc_(desc), names_(std::make_unique<AnimationNames>(desc)) {}
+TargetResolver::~TargetResolver() = default;
+
+std::optional<Param> TargetResolver::target(std::string_view path, std::string* error) const {
+  return probe(desc_, path, error, names_.get());
 }
 
 bool read_target(const SceneDesc& desc, std::string_view path, std::vector<double>* value) {
@@ -331,25 +387,21 @@ bool read_target(const SceneDesc& desc, std::string_view path, std::vector<doubl
 }
 
 bool write_target(SceneDesc& desc, std::string_view path, std::span<const double> value) {
-  std::string error;
-  const std::optional<Param> p = animation_target(desc, path, &error);
-  if (!p || value.size() != size_t(key_width(p->kind))) return false;
-  Access a;
-  a.op = Access::Op::write;
-  a.in = value;
-  resolve(desc, path, a);
-  return a.found.has_value();
+  return write(desc, path, value, nullptr);
 }
 
 std::vector<double> track_value(const TrackDesc& track, double frame) { return value_at(track, frame, false); }
 
 void apply_animation(SceneDesc& desc, double frame) {
+  if (desc.animation.empty()) return;
+  // Keys write values, never names, so the index stays true through the pass.
+  const NameIndex names(desc);
   for (const TrackDesc& track : desc.animation) {
     if (track.keys.empty()) continue;
-    const std::optional<Param> p = animation_target(desc, track.target, nullptr);
+    const std::optional<Param> p = probe(desc, track.target, nullptr, &names);
     if (!p) continue;
     const std::vector<double> value = value_at(track, frame, discrete_kind(p->kind));
-    write_target(desc, track.target, value);
+    write(desc, track.target, value, &names);
   }
 }
 
@@ -376,18 +428,22 @@ bool animated_between(const SceneDesc& desc, double from, double to) {
 
 std::vector<std::string> check_animation(const SceneDesc& desc) {
   std::vector<std::string> problems;
+  // The first track on each target: a later one is reported against it, once, so
+  // thousands of tracks on one target cost a line each rather than a line per pair.
+  std::unordered_map<std::string_view, size_t> first_on;
+  first_on.reserve(desc.animation.size());
+  const TargetResolver targets(desc);
   for (size_t t = 0; t < desc.animation.size(); ++t) {
     const TrackDesc& track = desc.animation[t];
     const std::string at = "animation[" + std::to_string(t) + "] (" + in_quotes(track.target) + ")";
     std::string error;
-    const std::optional<Param> p = animation_target(desc, track.target, &error);
+    const std::optional<Param> p = targets.target(track.target, &error);
     if (!p) {
       problems.push_back(at + ": " + error);
       continue;
     }
-    for (size_t u = 0; u < t; ++u)
-      if (desc.animation[u].target == track.target)
-        problems.push_back(at + ": animation[" + std::to_string(u) + "] already animates this target");
+    if (const auto [first, added] = first_on.emplace(track.target, t); !added)
+      problems.push_back(at + ": animation[" + std::to_string(first->second) + "] already animates this target");
     const size_t width = size_t(key_width(p->kind));
     for (size_t k = 0; k < track.keys.size(); ++k) {
       const KeyDesc& key = track.keys[k];

@@ -16,6 +16,7 @@
 
 #include "core/document/desc.h"
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -27,6 +28,24 @@ namespace inkray {
 // The parameter a path names in `desc` (its kind, range and stage), or nullopt with
 // *error saying which part of the path does not exist or why it cannot be keyed.
 std::optional<Param> animation_target(const SceneDesc& desc, std::string_view path, std::string* error);
+
+// animation_target for the tracks of a whole document: list entries are found through
+// an index of their names built once, so resolving n tracks against n entries takes
+// linear time rather than a search of the list per track. Holds `desc` by reference;
+// valid while its lists and names are unchanged.
+struct AnimationNames;
+class TargetResolver {
+ public:
+  explicit TargetResolver(const SceneDesc& desc);
+  ~TargetResolver();
+  TargetResolver(const TargetResolver&) = delete;
+  TargetResolver& operator=(const TargetResolver&) = delete;
+  std::optional<Param> target(std::string_view path, std::string* error) const;
+
+ private:
+  const SceneDesc& desc_;
+  std::unique_ptr<const AnimationNames> names_;
+};
 
 // How many numbers a key of this kind holds (1 or 3); 0 for kinds that cannot be keyed.
 int key_width(ParamKind kind);

@@ -57,8 +57,9 @@ size_t copy_tracks(SceneDesc& desc, std::string_view from, std::string_view to) 
 }
 
 size_t drop_vanished_tracks(const SceneDesc& before, SceneDesc& after) {
+  const TargetResolver now(after), was(before);
   return std::erase_if(after.animation, [&](const TrackDesc& t) {
-    return !animation_target(after, t.target, nullptr) && animation_target(before, t.target, nullptr);
+    return !now.target(t.target, nullptr) && was.target(t.target, nullptr);
   });
 }
 

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <unordered_set>
 #include <vector>
 
 namespace inkray {
@@ -549,7 +550,7 @@ std::vector<double> raw_key_value(const Json& j) {
 constexpr Param kKeyFrame = required(number("frame", -1e6, 1e6, "Frame of the key"));
 constexpr Param kKeyInterp = choice("interp", kInterpolationNames, "Interpolation towards the next key");
 
-void read_track(ErrorLog& log, const SceneDesc& scene, const Json& j, TrackDesc& track, const std::string& at) {
+void read_track(ErrorLog& log, const TargetResolver& targets, const Json& j, TrackDesc& track, const std::string& at) {
   if (!expect_object(log, j, at, "a track ({\"target\": \"objects/NAME/transform/translate\", \"keys\": [...]})"))
     return;
   check_keys(log, j, at, {"target", "keys"});
@@ -561,7 +562,7 @@ void read_track(ErrorLog& log, const SceneDesc& scene, const Json& j, TrackDesc&
   }
   track.target = target->get_ref<const std::string&>();
   // An unknown target is reported by check_scene (check_animation), as other references are.
-  const std::optional<Param> p = animation_target(scene, track.target, nullptr);
+  const std::optional<Param> p = targets.target(track.target, nullptr);
   const auto keys = j.find("keys");
   const std::string keys_at = child_path(at, "keys");
   if (keys == j.end() || !keys->is_array() || keys->empty()) {
@@ -612,13 +613,16 @@ void read_animation(ErrorLog& log, const Json& doc, SceneDesc& scene) {
     log.add("animation", "expected an array of tracks, got " + describe(*it));
     return;
   }
+  // The lists are read by now; tracks are resolved against them through one index and
+  // checked for a shared target with a set, so many tracks take linear time.
+  const TargetResolver targets(scene);
+  std::unordered_set<std::string> animated;
   for (std::size_t i = 0; i < it->size(); ++i) {
     TrackDesc track;
     const std::string at = element_path("animation", i);
-    read_track(log, scene, (*it)[i], track, at);
-    for (const TrackDesc& other : scene.animation)
-      if (!track.target.empty() && other.target == track.target)
-        log.add(child_path(at, "target"), "another track already animates " + in_quotes(track.target));
+    read_track(log, targets, (*it)[i], track, at);
+    if (!track.target.empty() && !animated.insert(track.target).second)
+      log.add(child_path(at, "target"), "another track already animates " + in_quotes(track.target));
     scene.animation.push_back(std::move(track));
   }
 }

@@ -210,8 +210,9 @@ Json key_value_json(const std::optional<Param>& p, const std::vector<double>& va
 
 Json animation_json(const SceneDesc& scene) {
   Json tracks = Json::array();
+  const TargetResolver targets(scene);
   for (const TrackDesc& track : scene.animation) {
-    const std::optional<Param> p = animation_target(scene, track.target, nullptr);
+    const std::optional<Param> p = targets.target(track.target, nullptr);
     Json keys = Json::array();
     for (const KeyDesc& key : track.keys) {
       Json object = Json::object();

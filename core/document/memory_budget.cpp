@@ -34,6 +34,9 @@ constexpr std::uint64_t kBytesPerStrokeVertex = 200;  // 162 measured
 constexpr std::uint64_t kBytesPerTexel = 16;
 // A brush image decoded as RGBA and baked into two 8-bit variants (by construction).
 constexpr std::uint64_t kBytesPerBrushTexel = 6;
+// An animation key of three values: read from JSON, and held in the document and in
+// the copies of it at the frame and the shutter's ends that the compiler keeps.
+constexpr std::uint64_t kBytesPerKey = 768;  // 695 measured
 
 struct Estimator {
   const SceneDesc& scene;
@@ -87,6 +90,9 @@ MemoryEstimate estimate_memory(const SceneDesc& scene, const ImageSizeReader& re
     e.add(at + " (" + std::to_string(s.count) + " strokes)",
           std::uint64_t(stroke_vertex_count(s)) * kBytesPerStrokeVertex);
   }
+  std::uint64_t keys = 0;
+  for (const TrackDesc& track : scene.animation) keys += track.keys.size();
+  e.add("animation (" + std::to_string(keys) + " keys)", keys * kBytesPerKey);
   std::sort(e.estimate.items.begin(), e.estimate.items.end(),
             [](const MemoryItem& a, const MemoryItem& b) { return a.bytes > b.bytes; });
   return e.estimate;

@@ -4,7 +4,9 @@
 
 #include "core/compiler/compile.h"
 #include "core/compiler/compile_objects.h"
+#include "core/document/error_log.h"
 #include "core/document/json_io.h"
+#include "core/document/memory_budget.h"
 #include "tests/support/messages.h"
 #include "tests/support/render_helpers.h"
 
@@ -216,6 +218,58 @@ TEST(AnimationJson, AnUnknownTargetStillOpensForEditingAndKeepsItsKeys) {
   EXPECT_NE(joined(loaded.warnings).find("no entry named \"gone\""), std::string::npos) << joined(loaded.warnings);
   EXPECT_EQ(loaded.scene->animation[0].keys[0].value, (std::vector<double>{1, 2, 3}));
   EXPECT_NE(scene_to_string(*loaded.scene).find("\"objects/gone/transform/translate\""), std::string::npos);
+}
+
+// Many tracks: 5,000 on one target once made 12.5 million messages (2.1 GiB), one per
+// pair. A track sharing its target is reported once, against the first; tracks on
+// thousands of objects resolve (through an index of names) and all apply.
+TEST(AnimationScale, ManyTracksGiveALineEachAndAllApply) {
+  constexpr int kTracks = 5000;
+  SceneDesc shared = ball_scene();
+  for (int i = 0; i < kTracks; ++i)
+    shared.animation.push_back({"objects/ball/transform/translate", {key(1, {0, double(i), 0})}});
+  const std::vector<std::string> problems = check_animation(shared);
+  ASSERT_EQ(problems.size(), size_t(kTracks - 1));
+  EXPECT_EQ(problems.back(), "animation[4999] (\"objects/ball/transform/translate\"): animation[0] already "
+                             "animates this target");
+  const std::string text = scene_to_string(shared);
+  const SceneLoadResult loaded = parse_scene(text, ".", "many.json");
+  ASSERT_FALSE(loaded);
+  // The reader reports the first ErrorLog::kMaxLines problems and how many more there are.
+  EXPECT_EQ(loaded.errors.size(), ErrorLog::kMaxLines + 1);
+  ASSERT_FALSE(loaded.errors.empty());
+  EXPECT_NE(loaded.errors[0].find("animation[1].target: another track already animates"), std::string::npos)
+      << loaded.errors[0];
+
+  SceneDesc spread = ball_scene();
+  for (int i = 0; i < kTracks; ++i) {
+    spread.objects.push_back(testing::make_object("o" + std::to_string(i), SphereDesc{}, "toon"));
+    spread.animation.push_back({"objects/o" + std::to_string(i) + "/transform/translate",
+                                {key(1, {0, 0, 0}, Interpolation::linear), key(3, {double(i), 0, 0})}});
+  }
+  EXPECT_TRUE(check_animation(spread).empty()) << joined(check_animation(spread));
+  const SceneDesc at = scene_at_frame(spread, 2);
+  for (int i = 0; i < kTracks; ++i) ASSERT_EQ(at.objects[size_t(i) + 1].transform.translate.x, float(i) / 2) << i;
+  const SceneLoadResult reopened = parse_scene(scene_to_string(spread), ".", "spread.json");
+  ASSERT_TRUE(reopened) << joined(reopened.errors);
+  EXPECT_EQ(reopened.scene->animation, spread.animation);
+}
+
+// Keys take memory: 400,000 of them cost 278 MB of peak memory in inkray-render
+// (scripts/measure_memory_costs), so the estimate counts them and a budget refuses them.
+TEST(AnimationScale, KeysCountInTheMemoryEstimate) {
+  SceneDesc d = ball_scene();
+  TrackDesc track{"objects/ball/transform/translate", {}};
+  for (int k = 0; k < 400000; ++k) track.keys.push_back(key(k + 1, {0, k * 1e-6, 0}, Interpolation::linear));
+  d.animation = {track};
+  const MemoryEstimate estimate = estimate_memory(d);
+  ASSERT_FALSE(estimate.items.empty());
+  EXPECT_EQ(estimate.items[0].what, "animation (400000 keys)");
+  EXPECT_GE(estimate.items[0].bytes, std::uint64_t(278) << 20);
+  std::vector<std::string> errors;
+  check_memory_budget(d, std::uint64_t(128) << 20, errors);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("animation (400000 keys)"), std::string::npos) << errors[0];
 }
 
 TEST(AnimationCompile, TheCompilerRendersTheCurrentFrame) {
