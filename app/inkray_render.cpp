@@ -3,6 +3,7 @@
 #include "core/compiler/compile.h"
 #include "core/document/graph_reference.h"
 #include "core/document/json_io.h"
+#include "core/document/scene_hash.h"
 #include "core/film/denoise.h"
 #include "core/film/film_partial.h"
 #include "core/film/line_decisions_file.h"
@@ -69,6 +70,7 @@ struct Renderer {
   const RenderCliOptions& opt;
   SceneCompiler compiler;
   RenderSession session;
+  bool checkpoint_failed = false;  // makes the run exit 1 once every frame is rendered
   explicit Renderer(const RenderCliOptions& o) : opt(o), session(o.threads.value_or(0)) {}
 };
 
@@ -110,6 +112,7 @@ PartialInfo film_info(const RenderSession& session, const SceneDesc& desc, const
   info.frame = desc.render.frame;
   info.seed = desc.render.seed;
   info.scene = scene_to_string(desc);
+  info.assets = hash_scene_assets(desc);  // merge, --resume and --line-decisions compare them
   info.aovs = session.film().aovs().first_hit();
   info.lines = session.film().has_lines();
   info.nonfinite = session.film().nonfinite_samples();
@@ -304,7 +307,9 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
                    "error: %s: the time limit of %g s ran out at sample %u of %u-%u; the partial %s was not "
                    "written%s\n",
                    label.c_str(), time_limit, session.stats().passes, first, end, files.output.c_str(),
-                   opt.checkpoint_minutes ? " (--resume continues from the checkpoint)" : "");
+                   !opt.checkpoint_minutes    ? ""
+                   : checkpoint_error.empty() ? " (--resume continues from the checkpoint)"
+                                              : " (and the checkpoint could not be written)");
       return 1;
     }
     if (!write_partial_file(session.film(), film_info(session, desc, window), files.output, &error)) {
@@ -331,6 +336,14 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
     }
   }
   if (complete && fs::exists(files.checkpoint, ec)) fs::remove(files.checkpoint, ec);
+  if (complete) remove_stale_temporaries(files.checkpoint);  // a killed run's, when none was written
+  if (!checkpoint_error.empty()) {
+    std::fprintf(stderr, "error: %s: checkpoint %s could not be written (%s); %s\n", label.c_str(),
+                 files.checkpoint.c_str(), checkpoint_error.c_str(),
+                 complete ? "the render completed and its files were written"
+                          : "the image of the samples done was written, but --resume cannot continue it");
+    r.checkpoint_failed = true;
+  }
 
   if (opt.quiet) return 0;
   const RenderStats& s = session.stats();
@@ -424,6 +437,10 @@ int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
                    range.first, range.last);
       return 2;
     }
+    if (const std::string problem = check_frame_names(opt, frames_of(range)); !problem.empty()) {
+      std::fprintf(stderr, "inkray-render: --frames %d-%d: %s\n", range.first, range.last, problem.c_str());
+      return 2;
+    }
   }
   Renderer renderer(opt);
   for (size_t i = 0; i < frames.size(); ++i) {
@@ -432,7 +449,7 @@ int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
         status != 0)
       return status;
   }
-  return 0;
+  return renderer.checkpoint_failed ? 1 : 0;
 }
 
 }  // namespace

@@ -5,10 +5,13 @@
 #include "core/io/output_set.h"
 #include "core/render/render_outputs.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
+#include <tuple>
 
 namespace inkray {
 
@@ -56,7 +59,8 @@ Final renders on many machines (docs/final-renders.md):
   --frames A-B[:STEP]   render frames A to B (both included) every STEP frames; "all" is the
                         scene's render.frame_start to frame_end, and a single number one frame.
                         A run of '#' in -o and in --aov files becomes the frame number, zero-padded
-                        (out_####.png -> out_0001.png); more than one frame needs it
+                        (out_####.png -> out_0001.png); more than one frame needs it, and a range
+                        in which two frames would write the same file is refused
   --samples A B         render only samples A to B (B excluded) of every pixel, as they fall in a
                         render of all of them, and write -o (.exr) as a partial: the film's sums
                         with the scene and its settings. inkray-merge adds partials up to the image
@@ -65,7 +69,8 @@ Final renders on many machines (docs/final-renders.md):
                         and with --samples the partial holds it
   --checkpoint MINUTES  every MINUTES, and when the time limit ends the render early, write the
                         film as a partial to OUT.checkpoint.exr (OUT being -o); it is removed when
-                        the render completes
+                        the render completes. A checkpoint that cannot be written makes the run
+                        exit 1 (the render goes on and its image is still written)
   --resume              continue from OUT.checkpoint.exr when there is one (refused when it is of
                         another scene, setting, frame or size); with none, skip the render when
                         its image and AOV files all exist
@@ -160,7 +165,10 @@ bool has_frame_pattern(const std::filesystem::path& path) {
 }
 
 std::filesystem::path expand_frame_pattern(const std::filesystem::path& path, int frame) {
+  // As printf's "%0*d" with the run's length as width, but for a run of any length.
   const std::string in = path.string();
+  const std::string digits = std::to_string(frame < 0 ? -static_cast<long long>(frame) : frame);
+  const std::string sign = frame < 0 ? "-" : "";
   std::string out;
   for (size_t i = 0; i < in.size();) {
     if (in[i] != '#') {
@@ -169,12 +177,69 @@ std::filesystem::path expand_frame_pattern(const std::filesystem::path& path, in
     }
     size_t run = 0;
     while (i + run < in.size() && in[i + run] == '#') ++run;
-    char digits[32];
-    std::snprintf(digits, sizeof digits, "%0*d", int(run), frame);
+    out += sign;
+    if (run > sign.size() + digits.size()) out.append(run - sign.size() - digits.size(), '0');
     out += digits;
     i += run;
   }
   return out;
+}
+
+std::vector<int> frames_of(const FrameRange& range) {
+  std::vector<int> frames;
+  for (long long f = range.first; f <= range.last; f += range.step) frames.push_back(int(f));
+  return frames;
+}
+
+std::string check_frame_names(const RenderCliOptions& o, const std::vector<int>& frames) {
+  struct Pattern {
+    std::string label;
+    std::filesystem::path file;
+  };
+  std::vector<Pattern> patterns = {{"-o " + o.output.string(), o.output}};
+  if (o.denoise && !o.samples) patterns.push_back({"--denoise's raw image", raw_image_path(o.output)});
+  if (o.checkpoint_minutes || o.resume) patterns.push_back({"the checkpoint", checkpoint_path(o.output)});
+  for (const auto& a : o.aovs)
+    if (!a.file.empty()) patterns.push_back({"--aov " + a.name + "=" + a.file.string(), a.file});
+  const auto name_of = [&](uint32_t pattern, uint32_t frame) {
+    return expand_frame_pattern(patterns[pattern].file, frames[frame]).lexically_normal().string();
+  };
+  // Hashes sorted, so only names with equal hashes are compared: a range of a million
+  // frames costs 16 bytes a name, not the names themselves.
+  struct Name {
+    size_t hash;
+    uint32_t pattern, frame;
+  };
+  std::vector<Name> names;
+  names.reserve(frames.size() * patterns.size());
+  for (uint32_t f = 0; f < frames.size(); ++f)
+    for (uint32_t p = 0; p < patterns.size(); ++p)
+      names.push_back({std::hash<std::string>{}(name_of(p, f)), p, f});
+  std::sort(names.begin(), names.end(), [](const Name& a, const Name& b) {
+    return std::tie(a.hash, a.frame, a.pattern) < std::tie(b.hash, b.frame, b.pattern);
+  });
+  // Of all collisions, the one between the earliest frames is reported.
+  const Name* first = nullptr;
+  const Name* second = nullptr;
+  for (size_t i = 0; i < names.size(); ++i)
+    for (size_t j = i + 1; j < names.size() && names[j].hash == names[i].hash; ++j) {
+      if (name_of(names[i].pattern, names[i].frame) != name_of(names[j].pattern, names[j].frame)) continue;
+      if (!second || std::tie(names[j].frame, names[i].frame) < std::tie(second->frame, first->frame)) {
+        first = &names[i];
+        second = &names[j];
+      }
+    }
+  if (!first) return "";
+  const std::string file = name_of(first->pattern, first->frame);
+  const std::string a = std::to_string(frames[first->frame]), b = std::to_string(frames[second->frame]);
+  const std::string& la = patterns[first->pattern].label;
+  const std::string& lb = patterns[second->pattern].label;
+  if (first->frame == second->frame)
+    return "frame " + a + " would write " + file + " twice (" + la + " and " + lb + ")";
+  if (first->pattern == second->pattern)
+    return "frames " + a + " and " + b + " would both write " + file + " (" + la + ")";
+  return "frames " + a + " and " + b + " would both write " + file + " (" + la + " at frame " + a + ", " +
+         lb + " at frame " + b + ")";
 }
 
 std::filesystem::path checkpoint_path(const std::filesystem::path& output) {
@@ -422,6 +487,13 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
         return std::nullopt;
       }
   }
+  // Every frame's files must differ from every other frame's, or one would overwrite another.
+  if (o.frames && !o.frames->all)
+    if (std::string problem = check_frame_names(o, frames_of(*o.frames)); !problem.empty()) {
+      *error = "--frames " + std::to_string(o.frames->first) + "-" + std::to_string(o.frames->last) + ": " +
+               problem;
+      return std::nullopt;
+    }
   // Every output is checked before the render, so a bad path costs no render time
   // (for frames, as the first frame names them: the folders are those of every frame).
   const int frame = o.frames && !o.frames->all ? o.frames->first : 0;

@@ -59,6 +59,12 @@ std::optional<FrameRange> parse_frame_range(std::string_view text);
 // Every run of '#' in `path` replaced by `frame`, zero-padded to the run's length.
 std::filesystem::path expand_frame_pattern(const std::filesystem::path& path, int frame);
 bool has_frame_pattern(const std::filesystem::path& path);
+// The frames a resolved range (not `all`) renders, first to last every step.
+std::vector<int> frames_of(const FrameRange& range);
+// "" when no two of `frames` write the same file and no frame writes one file twice, for
+// -o and every file derived from it and every --aov; else one line naming the two frames,
+// the file and the options whose patterns name it.
+std::string check_frame_names(const RenderCliOptions& options, const std::vector<int>& frames);
 // Where --checkpoint keeps the film of a render writing `output`.
 std::filesystem::path checkpoint_path(const std::filesystem::path& output);
 

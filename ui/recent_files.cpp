@@ -1,5 +1,7 @@
 #include "ui/recent_files.h"
 
+#include "core/io/atomic_file.h"
+
 #include <algorithm>
 #include <fstream>
 
@@ -30,8 +32,10 @@ void RecentFiles::remove(const std::filesystem::path& file) {
 void RecentFiles::save() const {
   std::error_code ec;
   std::filesystem::create_directories(store_.parent_path(), ec);
-  std::ofstream out(store_, std::ios::trunc);
-  for (const auto& f : files_) out << f.string() << '\n';
+  // Replaced atomically (core/io), so a crash mid-save keeps the previous list.
+  std::string text;
+  for (const auto& f : files_) text += f.string() + '\n';
+  write_file_atomically(store_, text, nullptr);
 }
 
 }  // namespace inkray

@@ -126,8 +126,7 @@ bool save_scene(const SceneDesc& scene, const fs::path& file, std::string* error
     if (error) *error = "cannot save " + file.string() + ": " + e.what();
     return false;
   }
-  // A save killed mid-write left its temporary; this is the moment someone is looking.
-  remove_stale_temporaries(file);
+  // A save killed mid-write left its temporary: staging the file removes it.
   return write_file_atomically(file, text, error);
 }
 

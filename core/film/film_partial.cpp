@@ -2,12 +2,18 @@
 // unsigned words, so nothing is rounded), with inkray.* header attributes.
 #include "core/film/film_partial.h"
 
+#include "core/document/json_io.h"
+#include "core/document/scene_hash.h"
 #include "core/film/partial_channels.h"
+#include "core/film/partial_seal.h"
 #include "core/io/file_bytes.h"
+#include "core/io/json_bounds.h"
 
 #include <tinyexr.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -56,7 +62,8 @@ std::string tiles_text(const std::vector<uint8_t>& tiles) {
   return s;
 }
 
-std::map<std::string, Attribute> partial_attributes(const PartialInfo& info) {
+std::map<std::string, Attribute> partial_attributes(const PartialInfo& info,
+                                                    const std::string& channel_checksums) {
   std::map<std::string, Attribute> a;
   a["inkray.format"] = {"string", std::string(kPartialFormat)};
   a["inkray.version"] = {"int", ints({kPartialVersion})};
@@ -72,6 +79,11 @@ std::map<std::string, Attribute> partial_attributes(const PartialInfo& info) {
   a["inkray.lines"] = {"int", ints({info.lines ? 1 : 0})};
   a["inkray.nonfinite"] = {"string", std::to_string(info.nonfinite)};
   if (!info.tiles_done.empty()) a["inkray.passInProgress"] = {"string", tiles_text(info.tiles_done)};
+  a["inkray.assets"] = {"string", assets_to_json(info.assets)};
+  a["inkray.contentHash"] = {"string", hash_hex(scene_content_hash(info.scene, info.assets))};
+  a["inkray.channelChecksums"] = {"string", channel_checksums};
+  a[std::string(kHeaderChecksumAttribute)] = {"string", std::string(kUnsealed)};
+  a[std::string(kDataChecksumAttribute)] = {"string", std::string(kUnsealed)};
   return a;
 }
 
@@ -113,6 +125,11 @@ std::string printable(const std::string& text) {
   return out;
 }
 
+std::string version_problem(int version) {
+  return "partial format version " + std::to_string(version) + "; this inkray reads version " +
+         std::to_string(kPartialVersion) + " only: render it again with this inkray";
+}
+
 // Reads the attributes of a parsed header into `info`; false with *error (no file name).
 bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error) {
   std::map<std::string, Attribute> found;
@@ -136,8 +153,8 @@ bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error)
       return false;
     }
     if (it->second.type != type) {
-      *error = std::string("attribute ") + name + " is of type " + printable(it->second.type) + ", expected " +
-               type;
+      *error = std::string("attribute ") + name + " is of type " + printable(it->second.type) +
+               ", expected " + type;
       return false;
     }
     if (size && it->second.value.size() != size) {
@@ -152,8 +169,7 @@ bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error)
   if (!need("inkray.version", "int", 4, &v)) return false;
   const int version = int(get_u32(*v, 0));
   if (version != kPartialVersion) {
-    *error = "partial format version " + std::to_string(version) + "; this inkray reads version " +
-             std::to_string(kPartialVersion);
+    *error = version_problem(version);
     return false;
   }
   if (!need("inkray.imageSize", "v2i", 8, &v)) return false;
@@ -172,6 +188,22 @@ bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error)
   info->seed = int(get_u32(*v, 0));
   if (!need("inkray.scene", "string", 0, &v)) return false;
   info->scene = v->c_str();
+  // Bounded before anything parses it: merging compares scenes as JSON.
+  if (std::string p = json_bounds_problem(info->scene, kMaxHeaderJsonDepth, kMaxSceneFileBytes); !p.empty()) {
+    *error = "attribute inkray.scene " + p + " (expected a scene as inkray writes it)";
+    return false;
+  }
+  if (!need("inkray.assets", "string", 0, &v)) return false;
+  if (std::string p = assets_from_json(v->c_str(), &info->assets); !p.empty()) {
+    *error = "attribute inkray.assets " + p + " (expected a JSON list of [path, hash] pairs)";
+    return false;
+  }
+  if (!need("inkray.contentHash", "string", 16, &v)) return false;
+  const auto content = parse_hash_hex(*v);
+  if (!content || *content != scene_content_hash(info->scene, info->assets)) {
+    *error = "attribute inkray.contentHash is not the hash of inkray.scene and inkray.assets";
+    return false;
+  }
   if (!need("inkray.aovs", "string", 0, &v)) return false;
   info->aovs = {};
   std::stringstream names(v->c_str());
@@ -233,6 +265,61 @@ bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error)
   return true;
 }
 
+// 2^32 samples (a count's range) of the largest float.
+constexpr double kMaxSum = 4294967296.0 * double(std::numeric_limits<float>::max());
+
+// One EXR channel's words, as little-endian bytes in row order.
+uint64_t plane_checksum(const uint32_t* words, size_t n) {
+  ContentHash h;
+  if constexpr (std::endian::native == std::endian::little) {
+    h.add(std::string_view(reinterpret_cast<const char*>(words), 4 * n));
+  } else {
+    std::string le;
+    for (size_t i = 0; i < n; ++i) put_u32(le, words[i]);
+    h.add(le);
+  }
+  return h.digest();
+}
+
+// From the raw attributes: a partial (inkray.format) of this version (inkray.version),
+// checked before the checksums so that an older partial, which has none, is named as
+// such; "" when it is.
+std::string raw_identity_problem(std::string_view bytes, const std::vector<RawAttribute>& raw) {
+  const RawAttribute* format = nullptr;
+  const RawAttribute* version = nullptr;
+  for (const RawAttribute& a : raw) {
+    if (a.name == "inkray.format") format = &a;
+    if (a.name == "inkray.version") version = &a;
+  }
+  if (!format || format->type != "string" || bytes.substr(format->value_at, format->size) != kPartialFormat)
+    return "not an inkray partial (an EXR without the inkray.format attribute \"inkray-partial\")";
+  if (!version || version->type != "int" || version->size != 4)
+    return "its header is damaged (no attribute inkray.version of type int)";
+  const int v = int(get_u32(std::string(bytes.substr(version->value_at, 4)), 0));
+  if (v != kPartialVersion) return version_problem(v);
+  return "";
+}
+
+// Which channel a damaged file decodes differently from its inkray.channelChecksums.
+std::string damaged_channel(const EXRHeader& h, const std::vector<ExrChannel>& exr,
+                            const std::vector<int>& index, const EXRImage& image, size_t n,
+                            const std::string& problem) {
+  std::string stored;
+  for (int i = 0; i < h.num_custom_attributes; ++i)
+    if (std::string_view(h.custom_attributes[i].name) == "inkray.channelChecksums" &&
+        h.custom_attributes[i].value)
+      stored.assign(reinterpret_cast<const char*>(h.custom_attributes[i].value),
+                    size_t(std::max(0, h.custom_attributes[i].size)));
+  for (size_t c = 0; c < exr.size(); ++c) {
+    const std::string want = stored.size() >= 17 * c + 16 ? stored.substr(17 * c, 16) : "";
+    std::vector<uint32_t> words(n);
+    std::memcpy(words.data(), image.images[index[c]], 4 * n);
+    if (want != hash_hex(plane_checksum(words.data(), n)))
+      return "its pixel data is damaged: channel " + exr[c].name + " does not match its checksum";
+  }
+  return problem + " (the offset table or the compressed bytes; every channel decodes as written)";
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------- messages
@@ -284,6 +371,9 @@ bool encode_partial(const Film& film, const PartialInfo& info, std::string* byte
         planes[c][i] = to_word(channel_value(p, ch.field, ch.component), ch.stored, exr[c].word);
       }
     }
+  std::string checksums;
+  for (size_t c = 0; c < exr.size(); ++c)
+    checksums += (c ? "," : "") + hash_hex(plane_checksum(planes[c].data(), n));
 
   std::vector<unsigned char*> data(exr.size());
   std::vector<EXRChannelInfo> infos(exr.size());
@@ -301,7 +391,7 @@ bool encode_partial(const Film& film, const PartialInfo& info, std::string* byte
   image.height = w.height();
   image.num_channels = int(exr.size());
 
-  const std::map<std::string, Attribute> attributes = partial_attributes(held);
+  const std::map<std::string, Attribute> attributes = partial_attributes(held, checksums);
   std::vector<EXRAttribute> custom;
   for (const auto& [name, a] : attributes) {
     EXRAttribute e;
@@ -334,17 +424,39 @@ bool encode_partial(const Film& film, const PartialInfo& info, std::string* byte
   }
   bytes->assign(reinterpret_cast<const char*>(memory), size);
   std::free(memory);
-  return true;
+  return seal_partial(bytes, error);
 }
 
 // ---------------------------------------------------------------- reading
 
 bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::unique_ptr<Film>* film,
                   std::string* error) {
-  const std::string label = file.string() + ": ";
   std::string bytes;
-  // No bound: a partial's size follows from its header, which the EXR reader checks.
-  if (!read_file_bytes(file, std::numeric_limits<std::uintmax_t>::max(), &bytes, error)) return false;
+  if (!read_file_bytes(file, kMaxPartialBytes, &bytes, error)) return false;
+  return read_partial_bytes(bytes, file.string(), info, film, error);
+}
+
+bool read_partial_bytes(std::string_view bytes, const std::string& label_text, PartialInfo* info,
+                        std::unique_ptr<Film>* film, std::string* error) {
+  const std::string label = label_text + ": ";
+  // From the raw bytes first: what the file is, its version, then its checksums; a
+  // decoder sees only a header whose bytes are those written.
+  std::vector<RawAttribute> raw;
+  size_t header_end = 0;
+  std::string problem;
+  if (!walk_exr_header(bytes, &raw, &header_end, &problem)) {
+    *error = label + problem;
+    return false;
+  }
+  if (std::string p = raw_identity_problem(bytes, raw); !p.empty()) {
+    *error = label + p;
+    return false;
+  }
+  const SealCheck seal = check_partial_seal(bytes, &problem);
+  if (seal == SealCheck::header_damaged) {
+    *error = label + problem;
+    return false;
+  }
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   EXRVersion version;
   if (ParseEXRVersionFromMemory(&version, data, bytes.size()) != TINYEXR_SUCCESS) {
@@ -362,17 +474,17 @@ bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::uni
     return false;
   }
   const EXRHeader& h = parsed.header;
-  std::string problem;
   if (!parse_attributes(h, info, &problem)) {
     *error = label + problem;
     return false;
   }
   const PixelWindow& w = info->window;
-  if (h.data_window.max_x - h.data_window.min_x + 1 != w.width() ||
-      h.data_window.max_y - h.data_window.min_y + 1 != w.height()) {
-    *error = label + "its pixels are " + std::to_string(h.data_window.max_x - h.data_window.min_x + 1) + "x" +
-             std::to_string(h.data_window.max_y - h.data_window.min_y + 1) + ", expected the window's " +
-             std::to_string(w.width()) + "x" + std::to_string(w.height());
+  // As 64-bit: a hostile data window's corners are any two ints.
+  const int64_t data_width = int64_t(h.data_window.max_x) - h.data_window.min_x + 1;
+  const int64_t data_height = int64_t(h.data_window.max_y) - h.data_window.min_y + 1;
+  if (data_width != w.width() || data_height != w.height()) {
+    *error = label + "its pixels are " + std::to_string(data_width) + "x" + std::to_string(data_height) +
+             ", expected the window's " + std::to_string(w.width()) + "x" + std::to_string(w.height());
     return false;
   }
   const std::vector<PartialChannel> channels = partial_channels(*info);
@@ -391,7 +503,30 @@ bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::uni
       return false;
     }
   }
-  if (!film) return true;
+  if (h.num_channels != int(exr.size())) {
+    *error = label + "holds " + std::to_string(h.num_channels) + " channels, expected " +
+             std::to_string(exr.size());
+    return false;
+  }
+  if (!film && seal == SealCheck::intact) return true;
+  // Partials are written uncompressed or RLE, which packs at most 128 bytes into 2: a
+  // header claiming more pixels than the bytes after it can hold is refused before the
+  // decoder allocates for them.
+  if (h.compression_type != TINYEXR_COMPRESSIONTYPE_NONE &&
+      h.compression_type != TINYEXR_COMPRESSIONTYPE_RLE) {
+    *error = label + "compressed with EXR compression " + std::to_string(h.compression_type) +
+             ", expected none or RLE as inkray writes partials";
+    return false;
+  }
+  const uint64_t decoded_bytes = uint64_t(w.width()) * uint64_t(w.height()) * exr.size() * 4;
+  if (decoded_bytes > 64 * uint64_t(bytes.size() - header_end) + 4096) {
+    *error = label + (seal == SealCheck::data_damaged
+                          ? problem
+                          : "its " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
+                                " pixels cannot fit in the " + std::to_string(bytes.size() - header_end) +
+                                " bytes after its header (a truncated or damaged file)");
+    return false;
+  }
 
   // Every channel is read as the type it is stored in (tinyexr converts only half).
   for (int k = 0; k < h.num_channels; ++k) parsed.header.requested_pixel_types[k] = h.pixel_types[k];
@@ -399,13 +534,24 @@ bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::uni
   // tinyexr 1.0.1 frees the planes of pixels it failed to decode by this count, which it
   // sets only on success: set here, a damaged file leaks nothing.
   loaded.image.num_channels = h.num_channels;
-  if (LoadEXRImageFromMemory(&loaded.image, &parsed.header, data, bytes.size(), &err) != TINYEXR_SUCCESS) {
-    *error = label + "cannot read the pixels (" + take_error(err, "truncated or damaged") + ")";
+  const bool decoded =
+      LoadEXRImageFromMemory(&loaded.image, &parsed.header, data, bytes.size(), &err) == TINYEXR_SUCCESS;
+  if (!decoded) {
+    const std::string why = take_error(err, "truncated or damaged");
+    *error = label + (seal == SealCheck::data_damaged ? problem + "; cannot decode it: " + why
+                                                      : "cannot read the pixels (" + why + ")");
     return false;
   }
   loaded.loaded = true;
   if (loaded.image.width != w.width() || loaded.image.height != w.height() || !loaded.image.images) {
-    *error = label + "cannot read the pixels (a tiled or damaged file)";
+    *error = label +
+             (seal == SealCheck::data_damaged ? problem : "cannot read the pixels (a tiled or damaged file)");
+    return false;
+  }
+  const size_t n = size_t(w.width()) * size_t(w.height());
+  if (seal == SealCheck::data_damaged) {
+    // The header is intact, so its per-channel checksums name what the damage changed.
+    *error = label + damaged_channel(h, exr, index, loaded.image, n, problem);
     return false;
   }
   auto out = std::make_unique<Film>(w.width(), w.height(), info->aovs, info->lines);
@@ -424,12 +570,23 @@ bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::uni
           continue;  // low words come with their high word
         uint32_t lo = 0;
         if (ch.stored == PartialStored::f64) lo = word(exr[c].low, i);
-        set_channel_value(p, ch.field, ch.component, from_words(word(c, i), lo, ch.stored));
+        const double v = from_words(word(c, i), lo, ch.stored);
+        // A film never sums what is not finite (Film drops such samples): one that
+        // does would spread Inf or NaN through the merged image. Nor can it sum more
+        // than 2^32 floats' worth: a larger sum would overflow when halves or
+        // partials are added.
+        if (!std::isfinite(v) || std::abs(v) > kMaxSum) {
+          *error = label + "channel " + ch.name + " holds " +
+                   (std::isfinite(v) ? "a value larger than any film sums" : "a non-finite value") +
+                   " at pixel (" + std::to_string(w.x0 + x) + "," + std::to_string(w.y0 + y) + ")";
+          return false;
+        }
+        set_channel_value(p, ch.field, ch.component, v);
       }
       out->add_pixel(x, y, p);
     }
   out->add_nonfinite(info->nonfinite);
-  *film = std::move(out);
+  if (film) *film = std::move(out);
   return true;
 }
 

@@ -6,11 +6,13 @@
 #pragma once
 
 #include "core/film/film.h"
+#include "core/io/content_hash.h"
 
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace inkray {
@@ -18,7 +20,9 @@ namespace inkray {
 inline constexpr std::string_view kPartialFormat = "inkray-partial";
 // 2: passes go to the halves by half_of_pass (film.h), and the toon_band and ids_mixed
 // channels exist; a version-1 partial cannot be merged with them.
-inline constexpr int kPartialVersion = 2;
+// 3: the header holds the assets' hashes and the content hash, and the file is sealed
+// by checksums (partial_seal.h); a version-2 partial cannot be checked for either.
+inline constexpr int kPartialVersion = 3;
 
 struct PartialInfo {
   int width = 0, height = 0;  // the full image
@@ -34,6 +38,10 @@ struct PartialInfo {
   AovSet aovs;             // first-hit AOVs held (outline AOVs come from the line sums)
   bool lines = false;      // the line sums are held (the scene draws lines)
   uint64_t nonfinite = 0;  // samples dropped as not finite
+  // The files the scene refers to and their bytes' hashes (scene_hash.h); the header's
+  // content hash is derived from these and the scene. Last: aggregate initialisers
+  // of the fields above keep working.
+  std::vector<AssetHash> assets;
 };
 
 // The file's bytes for the pixels of info.window of `film`, which covers the
@@ -41,11 +49,21 @@ struct PartialInfo {
 // *error on failure.
 bool encode_partial(const Film& film, const PartialInfo& info, std::string* bytes, std::string* error);
 // Reads a partial file: its header, and unless `film` is null its pixels as a
-// film of the window's size. Every problem (not an EXR, not a partial, a newer
-// version, a missing or mistyped attribute or channel, a truncated file) is one
-// line in *error naming the file and what was expected.
+// film of the window's size. Every problem (not a regular file, not an EXR, not a
+// partial, another version, a damaged header or pixel data, a missing or mistyped
+// attribute or channel, a scene nested too deep, a non-finite sum) is one line in
+// *error naming the file and what was expected. The whole file is checked against its
+// checksums either way.
 bool read_partial(const std::filesystem::path& file, PartialInfo* info, std::unique_ptr<Film>* film,
                   std::string* error);
+// The same from bytes in memory; `label` names them in messages ("FILE: ...").
+bool read_partial_bytes(std::string_view bytes, const std::string& label, PartialInfo* info,
+                        std::unique_ptr<Film>* film, std::string* error);
+
+// The largest partial a reader takes: the header (scene and assets) and 64 32-bit
+// channels of an 8192x8192 image with RLE's worst overhead.
+inline constexpr std::uintmax_t kMaxPartialBytes =
+    (std::uintmax_t(160) << 20) + std::uintmax_t(8192) * 8192 * 64 * 4 / 64 * 65;
 
 // "samples 0-64 of pixels (0,0)-(32,16)", "(0,0)-(32,16)", "0-64" and
 // "albedo,depth" for messages and headers (ranges and windows half-open).

@@ -1,5 +1,8 @@
 #include "core/film/partial_merge.h"
 
+#include "core/document/scene_hash.h"
+#include "core/io/json_bounds.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -40,14 +43,27 @@ std::string json_difference(const nlohmann::json& a, const nlohmann::json& b, co
   return (path.empty() ? "the document" : path) + ": " + text(a) + " vs " + text(b);
 }
 
-// A scene as compared: its sample limits say how long a render ran, not what it shows.
+// A scene as compared (scene_hash.h), as JSON; discarded when it is not JSON within
+// json_bounds' limits (json_difference recurses as deep as the scene nests).
 nlohmann::json comparable_scene(const std::string& text) {
-  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  if (j.is_object() && j.contains("render") && j["render"].is_object()) {
-    j["render"].erase("spp");
-    j["render"].erase("time_limit");
+  if (!json_bounds_problem(text, kMaxHeaderJsonDepth, text.size()).empty())
+    return nlohmann::json::value_t::discarded;
+  return nlohmann::json::parse(comparable_scene_text(text), nullptr, false);
+}
+
+// The first asset whose path or bytes differ, as "meshes/bunny.obj changed (...)"; "" when none.
+std::string asset_difference(const std::vector<AssetHash>& a, const std::vector<AssetHash>& b) {
+  for (const AssetHash& x : a) {
+    const auto y = std::find_if(b.begin(), b.end(), [&](const AssetHash& h) { return h.path == x.path; });
+    if (y == b.end()) return "the asset " + x.path + " is read by one and not by the other";
+    if (y->digest != x.digest)
+      return "the asset " + x.path + " changed between them (its bytes hash " + x.digest + " vs " +
+             y->digest + ")";
   }
-  return j;
+  for (const AssetHash& y : b)
+    if (std::none_of(a.begin(), a.end(), [&](const AssetHash& h) { return h.path == y.path; }))
+      return "the asset " + y.path + " is read by one and not by the other";
+  return "";
 }
 
 PixelWindow intersect(const PixelWindow& a, const PixelWindow& b) {
@@ -78,6 +94,14 @@ std::string partial_mismatch(const PartialInfo& a, const PartialInfo& b) {
     if (ja.is_discarded() || jb.is_discarded()) return "the scene is not JSON";
     if (std::string d = json_difference(ja, jb, ""); !d.empty()) return "the scene differs at " + d;
   }
+  if (std::string d = asset_difference(a.assets, b.assets); !d.empty()) return d;
+  // The content hash covers both; it differs here only where the comparisons above
+  // see no difference (the same assets listed in another order), and costs a parse of
+  // each scene, so it is computed only then.
+  if (!(a.assets == b.assets) &&
+      scene_content_hash(a.scene, a.assets) != scene_content_hash(b.scene, b.assets))
+    return "the scene content differs (content hash " + hash_hex(scene_content_hash(a.scene, a.assets)) +
+           " vs " + hash_hex(scene_content_hash(b.scene, b.assets)) + ")";
   if (a.lines != b.lines)
     return std::string("lines ") + (a.lines ? "on" : "off") + " vs " + (b.lines ? "on" : "off");
   return "";

@@ -11,9 +11,10 @@
 
 namespace inkray {
 
-// Whether two partials come from the same render: image size, frame, seed, AOVs
-// and the scene (its sample limits aside). "" when they do, else what differs,
-// e.g. "seed 1 vs 2" or "the scene differs at render/max_depth: 8 vs 16".
+// Whether two partials come from the same render: image size, frame, seed, AOVs,
+// the scene (its sample limits aside) and the bytes of its assets. "" when they do,
+// else what differs, e.g. "seed 1 vs 2", "the scene differs at render/max_depth: 8 vs
+// 16" or "the asset meshes/bunny.obj changed between them (...)".
 std::string partial_mismatch(const PartialInfo& a, const PartialInfo& b);
 
 // Adds partials into one film of the full image, checking that they can be

@@ -27,7 +27,8 @@ class StagedFile {
   StagedFile& operator=(const StagedFile&) = delete;
   ~StagedFile() { discard(); }
 
-  // Creates the temporary (O_EXCL, with the permissions of the file it will replace),
+  // First removes what killed writers left beside `target` (remove_stale_temporaries),
+  // then creates the temporary (O_EXCL, with the permissions of the file it will replace),
   // writes `bytes` and fsyncs it. Errors name `target` and keep the cause, e.g.
   // "cannot replace /x/out.png: Is a directory"; no temporary is left behind.
   bool stage(const std::filesystem::path& target, std::string_view bytes, std::string* error);
@@ -45,17 +46,38 @@ class StagedFile {
   std::filesystem::path target_, destination_, temporary_;
 };
 
+// Milliseconds StagedFile::commit waits before its rename: INKRAY_TEST_COMMIT_DELAY_MS, a
+// test hook only, which widens the moment a kill leaves a temporary (and, in an output
+// set, a journal) behind, so tests/app/output_kill_test.cpp can stop writers there on
+// purpose. 0 when unset; at most a minute.
+int test_commit_delay_ms();
+
 // stage() then commit(): one file replaced atomically.
 bool write_file_atomically(const std::filesystem::path& target, std::string_view bytes, std::string* error);
+
+// A fresh name for a temporary of `destination`, beside it:
+// "." name ".inkray-tmp-" pid "-" 8 random hex digits "-" 8 hex digits naming the host.
+std::filesystem::path new_temporary_path(const std::filesystem::path& destination);
+// True for a name new_temporary_path gives (or one without the host's part, as written
+// before it had one), for any file: then *stem is the name of the file it was for (cut to
+// fit NAME_MAX), *pid its writer and *host (when given) the host's part or "".
+bool parse_temporary_name(std::string_view file_name, std::string_view* stem, long* pid,
+                          std::string_view* host);
 
 // True for a temporary that a write to `target` creates ("." name ".inkray-tmp-" pid "-"
 // random), and for the older "<name>.tmp-" + 6 or 8 hex digits; *pid is 0 for the latter.
 bool is_temporary_of(const std::filesystem::path& target, std::string_view file_name, long* pid);
 
-// Deletes temporaries beside `target` (the file a write to it replaces) that a killed
-// process left: those whose process is gone, and old-style ones (no pid) not modified for
-// a minute. A live process's temporary is never touched, so concurrent saves are safe.
-// Returns how many it removed; failures are ignored, as the next call tries again.
+// Deletes the temporaries killed processes left in the folder of `target` (the file a
+// write to it replaces): first, every interrupted set of files there is completed
+// (recover_journal in core/io/commit_journal.h), since their temporaries are the sets'
+// newest versions; then `target`'s temporaries whose process is gone, and old-style ones
+// (no pid) not modified for a minute; and any other file's temporary written on this
+// machine (its host part) by a process that is gone. A live process's temporary is never
+// touched, and a process id is tested only on its own machine for other files, so
+// machines sharing a folder do not break each other's saves. StagedFile::stage calls it,
+// so every writer cleans up before it writes. Returns how many it removed; failures are
+// ignored, as the next call tries again.
 int remove_stale_temporaries(const std::filesystem::path& target);
 
 }  // namespace inkray

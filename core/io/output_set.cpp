@@ -1,6 +1,8 @@
 // Two-phase commit of output files, and the up-front check of output paths.
 #include "core/io/output_set.h"
 
+#include "core/io/commit_journal.h"
+
 #include <cerrno>
 #include <cstring>
 #include <system_error>
@@ -54,21 +56,30 @@ bool OutputSet::stage(const fs::path& target, std::string_view bytes, std::strin
       return false;
     }
   }
-  remove_stale_temporaries(target);
-  StagedFile file;
+  StagedFile file;  // stage() first completes or removes what a killed writer left
   if (!file.stage(target, bytes, error)) return false;
   files_.push_back(std::move(file));
   return true;
 }
 
 bool OutputSet::commit(std::string* error) {
+  // One file needs no journal: its rename is atomic by itself.
+  CommitJournal journal;
+  if (files_.size() > 1) {
+    std::vector<JournalEntry> entries;
+    for (const StagedFile& file : files_) entries.push_back({file.temporary(), file.destination()});
+    if (!journal.begin(entries, error)) {
+      files_.clear();
+      return false;
+    }
+  }
   std::string replaced;
   for (StagedFile& file : files_) {
     std::string reason;
     if (!file.commit(&reason)) {
       if (error) *error = reason + (replaced.empty() ? "" : " (already replaced: " + replaced + ")");
       files_.clear();
-      return false;
+      return false;  // the journal goes with the temporaries: the message says what was replaced
     }
     replaced += (replaced.empty() ? "" : ", ") + file.target().string();
   }

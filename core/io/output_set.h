@@ -1,6 +1,19 @@
 // Several output files (a render and its AOVs) that land together or not at all: every
 // file is staged to its temporary first and only when all staged are they renamed in.
 // Also the check, before any work, that a list of output paths can be written.
+//
+// A kill between the renames cannot leave a mix of two writes. commit() protocol
+// (docs/architecture.md, "Files written"):
+//  1. every file is staged: a flushed temporary beside its destination;
+//  2. the journal ".<first file>.inkray-journal" is written beside the first file, naming
+//     every (temporary -> destination) rename in order; it is flushed, locked (flock) by
+//     this process and given its name atomically, and its folder is flushed;
+//  3. the renames, in the journal's order, each followed by a flush of its folder;
+//  4. the journal is removed.
+// Whoever next stages a file in that folder (any writer: StagedFile::stage) finds a journal
+// no live process holds and completes it: every temporary it names that is still there is
+// renamed in, so the killed write's set wins whole, then the journal goes. Killed before
+// step 2 ended, nothing was replaced and the temporaries are removed as stale.
 #pragma once
 
 #include "core/io/atomic_file.h"
@@ -18,9 +31,10 @@ class OutputSet {
   // failure returns false with *error naming the file; the caller then drops the set.
   // A second output that resolves to the file of an earlier one is refused.
   bool stage(const std::filesystem::path& target, std::string_view bytes, std::string* error);
-  // Renames every staged file over its target. Staging has already failed for anything
-  // predictable (a folder in the way, a full disk), so this fails only when the folder
-  // changed meanwhile; then the rest are dropped and *error says what was replaced.
+  // Renames every staged file over its target, under a journal when there are several (see
+  // above). Staging has already failed for anything predictable (a folder in the way, a
+  // full disk), so this fails only when the journal cannot be written (nothing replaced) or
+  // the folder changed meanwhile; then the rest are dropped and *error says what was replaced.
   bool commit(std::string* error);
   void discard() { files_.clear(); }  // removes every temporary; so does the destructor
 

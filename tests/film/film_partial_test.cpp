@@ -2,13 +2,17 @@
 // not a whole partial is one clear error naming it (never a crash), and merging
 // refuses what would not add up to one render.
 #include "core/film/film_partial.h"
+#include "core/document/scene_hash.h"
 #include "core/film/partial_merge.h"
+#include "core/film/partial_seal.h"
 #include "core/image/image_io.h"
 #include "core/io/atomic_file.h"
+#include "tests/support/odd_film.h"
 
 #include <gtest/gtest.h>
 #include <tinyexr.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -32,37 +36,8 @@ class FilmPartial : public ::testing::Test {
   fs::path dir_;
 };
 
-AovSet every_first_hit_aov() {
-  AovSet a;
-  for (const Aov aov : {Aov::albedo, Aov::normal, Aov::depth, Aov::object_id, Aov::material_id}) a.add(aov);
-  return a;
-}
-
-// A film with values no float round trip would keep (thirds, a tiny and a huge sum).
-std::unique_ptr<Film> odd_film(int w, int h) {
-  auto film = std::make_unique<Film>(w, h, every_first_hit_aov(), true);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (uint32_t pass = 0; pass < 3; ++pass) {
-        const float v = float(x + 1) / 3.f + float(y) * 1e-7f + float(pass);
-        film->add_sample(x, y, pass, Color(v, v * 1e-30f, v * 1e30f));
-        FirstHit hit;
-        hit.object = x == 0 ? -1 : x + int(pass);
-        hit.material = y;
-        hit.albedo = Color(v);
-        hit.normal = Vec3(0.f, 1.f, v);
-        hit.depth = v * 7.f;
-        film->add_first_hit(x, y, hit);
-        LineSample lines;
-        lines.coverage[2] = v / 7.f;
-        lines.weight = v;
-        lines.override_color = Color(0.1f, v, 0.3f);
-        lines.rays = 3.f;
-        lines.hit_rays = 1.f;
-        film->add_lines(x, y, lines);
-      }
-  return film;
-}
+using testing::every_first_hit_aov;
+using testing::odd_film;
 
 PartialInfo info_of(int w, int h, PixelWindow window, uint32_t first, uint32_t end) {
   PartialInfo info;
@@ -189,7 +164,11 @@ Attributes good_attributes() {
           {"inkray.scene", {"string", "{}"}},
           {"inkray.aovs", {"string", ""}},
           {"inkray.lines", {"int", le32({0})}},
-          {"inkray.nonfinite", {"string", "0"}}};
+          {"inkray.nonfinite", {"string", "0"}},
+          {"inkray.assets", {"string", "[]"}},
+          {"inkray.contentHash", {"string", hash_hex(scene_content_hash("{}", {}))}},
+          {"inkray.headerChecksum", {"string", std::string(kUnsealed)}},
+          {"inkray.dataChecksum", {"string", std::string(kUnsealed)}}};
 }
 
 void write_exr(const fs::path& file, const Attributes& attributes, const std::vector<std::string>& channels) {
@@ -226,8 +205,16 @@ void write_exr(const fs::path& file, const Attributes& attributes, const std::ve
   header.requested_pixel_types = types.data();
   header.num_custom_attributes = int(custom.size());
   header.custom_attributes = custom.data();
+  // Sealed as the encoder seals a partial, so the reader looks past the checksums.
+  unsigned char* memory = nullptr;
   const char* err = nullptr;
-  ASSERT_EQ(SaveEXRImageToFile(&image, &header, file.c_str(), &err), TINYEXR_SUCCESS) << (err ? err : "");
+  const size_t size = SaveEXRImageToMemory(&image, &header, &memory, &err);
+  ASSERT_GT(size, 0u) << (err ? err : "");
+  std::string bytes(reinterpret_cast<const char*>(memory), size);
+  std::free(memory);
+  std::string error;
+  ASSERT_TRUE(seal_partial(&bytes, &error)) << error;
+  std::ofstream(file, std::ios::binary) << bytes;
 }
 
 TEST_F(FilmPartial, MistypedOrMissingPartsAreNamed) {
@@ -245,7 +232,29 @@ TEST_F(FilmPartial, MistypedOrMissingPartsAreNamed) {
   a = good_attributes();
   a["inkray.version"] = {"int", le32({kPartialVersion + 1})};
   write_exr(dir_ / "future.exr", a, {"R"});
-  EXPECT_NE(read_error(dir_ / "future.exr").find("version " + std::to_string(kPartialVersion + 1)), std::string::npos);
+  EXPECT_NE(read_error(dir_ / "future.exr").find("version " + std::to_string(kPartialVersion + 1)),
+            std::string::npos);
+  // An older partial has no checksums or assets' hashes to check: the render is redone.
+  a = good_attributes();
+  a["inkray.version"] = {"int", le32({kPartialVersion - 1})};
+  write_exr(dir_ / "older.exr", a, {"R"});
+  const std::string older = read_error(dir_ / "older.exr");
+  EXPECT_NE(
+      older.find("partial format version " + std::to_string(kPartialVersion - 1) +
+                 "; this inkray reads version " + std::to_string(kPartialVersion) + " only: render it again"),
+      std::string::npos)
+      << older;
+
+  a = good_attributes();
+  a["inkray.contentHash"] = {"string", "0123456789abcdef"};
+  write_exr(dir_ / "content.exr", a, {"R"});
+  EXPECT_NE(read_error(dir_ / "content.exr").find("inkray.contentHash is not the hash"), std::string::npos);
+
+  a = good_attributes();
+  a["inkray.assets"] = {"string", "[[\"meshes/a.obj\", 7]]"};
+  write_exr(dir_ / "assets.exr", a, {"R"});
+  EXPECT_NE(read_error(dir_ / "assets.exr").find("attribute inkray.assets holds an entry"),
+            std::string::npos);
 
   a = good_attributes();
   a["inkray.window"] = {"box2i", le32({0, 0, 4, 1})};
@@ -286,6 +295,19 @@ TEST(PartialMismatch, NamesTheSettingThatDiffers) {
   EXPECT_EQ(partial_mismatch(a, b), "");
   b.scene = R"({"format": "inkray-scene", "render": {"spp": 64, "max_depth": 16}})";
   EXPECT_EQ(partial_mismatch(a, b), "the scene differs at render/max_depth: 8 vs 16");
+  // The same scene text, but a mesh whose bytes changed between the renders.
+  PartialInfo c = a, d = a;
+  c.assets = {{"meshes/bunny.obj", "0123456789abcdef"}};
+  d.assets = {{"meshes/bunny.obj", "fedcba9876543210"}};
+  EXPECT_EQ(partial_mismatch(c, d),
+            "the asset meshes/bunny.obj changed between them (its bytes hash 0123456789abcdef vs "
+            "fedcba9876543210)");
+  d.assets.clear();
+  EXPECT_EQ(partial_mismatch(c, d), "the asset meshes/bunny.obj is read by one and not by the other");
+  // Scenes nested beyond any scene's depth are compared without recursing into them.
+  c = a;
+  c.scene = std::string(100000, '[') + std::string(100000, ']');
+  EXPECT_EQ(partial_mismatch(a, c), "the scene is not JSON");
 }
 
 TEST_F(FilmPartial, MergeRefusesOverlapsGapsAndHoles) {

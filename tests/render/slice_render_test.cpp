@@ -186,7 +186,7 @@ TEST(SliceRender, ResumesACheckpointCutMidPass) {
     if (finished || done == 0 || size_t(done) == t.size()) continue;
     cut = true;
     const PartialInfo info{64,   48,          {0, 0, 64, 48}, 0, s.stats().passes, t, 1.f, 0,
-                           "{}", some_aovs(), true,           0};
+                           "{}", some_aovs(), true,           0, {}};
     std::string error;
     ASSERT_TRUE(write_partial_file(s.film(), info, file, &error)) << error;
   }
