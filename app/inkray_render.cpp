@@ -257,32 +257,44 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
   if (opt.noise_threshold)
     session.set_adaptive({*opt.noise_threshold, uint32_t(opt.min_spp.value_or(16))});
 
-  // The render gets what reading and building left of the time, less what the painterly
-  // filter will need after it.
+  // --time is a budget (docs/final-renders.md, "Time limits"): the render gets what
+  // reading and building left of it, less what the painterly filter and the denoiser,
+  // measured on this machine, will need after it. They then run to the end whatever
+  // the clock says, so a render that finished a pass always writes its image.
   double render_seconds = 0.0;
   if (time_limit > 0.0) {
-    const double filter_seconds =
-        partial ? 0.0
-                : 1.25 * estimate_painterly_seconds(desc.render, desc.render.width, desc.render.height,
-                                                    &session.pool());
+    double filter_seconds = 0.0;
+    if (!partial) {
+      filter_seconds =
+          1.25 * estimate_painterly_seconds(desc.render, desc.render.width, desc.render.height, &session.pool());
+      if (opt.denoise)
+        filter_seconds += 1.25 * estimate_denoise_seconds(window.width(), window.height(), &session.pool());
+    }
     render_seconds = time_limit - seconds_since(start) - filter_seconds;
     if (render_seconds <= 0.0) {
       std::fprintf(
           stderr,
-          "error: %s: the painterly filter alone takes about %.1f s at %dx%d, more than the time limit of "
-          "%g s leaves; nothing was written\n",
-          label.c_str(), filter_seconds / 1.25, desc.render.width, desc.render.height, time_limit);
+          "error: %s: %s alone takes about %.1f s at %dx%d, more than the time limit of %g s leaves; "
+          "nothing was written\n",
+          label.c_str(), opt.denoise ? "the painterly filter with the denoiser" : "the painterly filter",
+          filter_seconds / 1.25, desc.render.width, desc.render.height, time_limit);
       return 1;
     }
   }
   const BatchLimits limits{int(end - first), render_seconds};
   const bool progress = !opt.quiet && isatty(fileno(stderr));
+  // A checkpoint that cannot be written is an error: the render goes on and its files are
+  // written, but the exit status says the render could not have been resumed.
+  std::string checkpoint_error;
   const auto write_checkpoint = [&] {
     const PartialInfo info = film_info(session, desc, window);
     if (info.end_pass == info.first_pass && info.tiles_done.empty()) return;  // nothing rendered yet
     std::string error;
-    if (!write_partial_file(session.film(), info, files.checkpoint, &error))
-      std::fprintf(stderr, "%swarning: checkpoint not written: %s\n", progress ? "\n" : "", error.c_str());
+    if (write_partial_file(session.film(), info, files.checkpoint, &error)) return;
+    if (checkpoint_error.empty())
+      std::fprintf(stderr, "%serror: checkpoint %s not written (the render goes on): %s\n", progress ? "\n" : "",
+                   files.checkpoint.c_str(), error.c_str());
+    checkpoint_error = error;
   };
   auto last_checkpoint = Cancel::Clock::now();
   const auto history = render_batch(session, limits, [&](const RenderStats& s) {
@@ -319,12 +331,11 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
   } else {
     if (opt.denoise) {
       const auto t0 = Cancel::Clock::now();
-      denoised = denoise(session.film(), &session.pool(), deadline);
-      if (denoised->image.pixels.empty()) return out_of_time(time_limit, "denoising");
+      denoised = denoise(session.film(), &session.pool());
       denoise_seconds = seconds_since(t0);
     }
     // Every output is staged before any is replaced: a failed AOV leaves no image behind.
-    switch (write_render_outputs(session, files.output, files.aovs, &error, deadline,
+    switch (write_render_outputs(session, files.output, files.aovs, &error, Cancel{},
                                  opt.crop ? window : PixelWindow{}, denoised ? &denoised->image : nullptr)) {
       case OutputsWritten::all:
         break;
@@ -375,11 +386,12 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
   return 0;
 }
 
-// --time bounds the whole run: the clock starts before the scene is read, and reading,
-// building, rendering and the painterly filter all stop at the deadline. Only the
-// render itself ends in an image; any other phase cut short is an error that writes
-// nothing (a half-built scene or half-filtered image would be a wrong render). With
-// --frames it bounds each frame, the first with the reading.
+// --time is a budget for the whole run: the clock starts before the scene is read.
+// Reading and building stop at the deadline (a half-built scene would be a wrong
+// render: nothing is written); the render stops there too, even mid-pass, keeping the
+// passes done; the painterly filter and the denoiser, whose time was kept back before
+// rendering, then run to the end. So an image is written whenever a pass finished.
+// With --frames it bounds each frame, the first with the reading.
 int run(const RenderCliOptions& opt, Cancel::Clock::time_point start) {
   // Before the scene is read only --time is known; its render.time_limit applies after.
   const double cli_limit = opt.time_seconds.value_or(0.0);

@@ -9,7 +9,10 @@
 // numbers estimate the denoised image's error without a reference.
 #include "core/film/denoise.h"
 
+#include "core/math/hash.h"
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace inkray {
@@ -339,6 +342,31 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
   }
   result.image = RgbImage{w, h, std::move(out)};
   return result;
+}
+
+double estimate_denoise_seconds(int width, int height, ThreadBudget* pool) {
+  if (width <= 0 || height <= 0) return 0.0;
+  // Two objects split by a diagonal edge, noisy samples in both halves: every filter
+  // rung runs, as in a render. The cost per pixel hardly depends on the picture.
+  const int w = std::min(width, 96), h = std::min(height, 96);
+  Film film(w, h, denoise_aovs());
+  for (uint32_t pass = 0; pass < 2; ++pass)
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const bool left = x < y;
+        const float noise = float(hash_u32(uint32_t(x) * 7919u + uint32_t(y) * 104729u + pass) >> 8) * 0x1p-24f;
+        film.add_sample(x, y, pass, Color(left ? 0.2f : 0.7f) * (0.5f + noise));
+        FirstHit hit;
+        hit.albedo = Color(left ? 0.3f : 0.8f);
+        hit.normal = Normal3(0.f, 0.f, 1.f);
+        hit.depth = 1.f + 0.01f * float(x);
+        hit.object = hit.material = left ? 0 : 1;
+        film.add_first_hit(x, y, hit);
+      }
+  const auto start = std::chrono::steady_clock::now();
+  denoise(film, pool);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return seconds * (double(width) * double(height)) / (double(w) * double(h));
 }
 
 }  // namespace inkray

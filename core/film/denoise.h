@@ -28,4 +28,9 @@ struct Denoised {
 // caller's arena; the result is the same either way.
 Denoised denoise(const Film& film, ThreadBudget* pool = nullptr, const Cancel& cancel = {});
 
+// About how long denoise() takes on a width x height film on `pool`, measured on this
+// machine by denoising a small noisy film and scaled by the pixel count: what a render
+// with a time limit keeps back for it (docs/final-renders.md, "Time limits").
+double estimate_denoise_seconds(int width, int height, ThreadBudget* pool = nullptr);
+
 }  // namespace inkray

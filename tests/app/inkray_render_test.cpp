@@ -183,6 +183,36 @@ TEST_F(InkrayRender, TimeLimitStopsBeforeSpp) {
   EXPECT_EQ(r.output.find("100000 spp"), std::string::npos) << r.output;
 }
 
+// --time is a budget: the denoiser's and the painterly filter's time is kept back from
+// the render, so a render the clock stops still writes its denoised image, its raw one
+// and the samples they hold (the README's example, at a small size).
+TEST_F(InkrayRender, TimeLimitKeepsTimeForTheDenoiser) {
+  const auto out = dir_ / "clean.png";
+  const RunResult r = run_render(scene("cornell.json") + " -o " + out.string() +
+                                 " --spp 100000 --time 1.5 --denoise --noise-threshold 0.02 --width 96 --height 72");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "clean_raw.png"));
+  EXPECT_EQ(r.output.find("100000 spp"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" spp, "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("denoised in"), std::string::npos) << r.output;
+}
+
+TEST_F(InkrayRender, TimeLimitKeepsTimeForThePainterlyFilterAndTheDenoiser) {
+  const auto file = dir_ / "paint.json";
+  std::ofstream(file) << R"({"format": "inkray-scene", "version": 1,
+    "render": {"width": 96, "height": 54, "painterly": "anisotropic", "painterly_radius": 6},
+    "materials": [{"name": "m", "type": "diffuse"}],
+    "lights": [{"name": "sun", "type": "directional"}],
+    "objects": [{"name": "ball", "material": "m", "shape": {"type": "sphere"}}]})";
+  const auto out = dir_ / "paint.png";
+  const RunResult r = run_render(file.string() + " -o " + out.string() + " --spp 100000 --time 1.5 --denoise");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "paint_raw.png"));
+  EXPECT_EQ(r.output.find("100000 spp"), std::string::npos) << r.output;
+}
+
 TEST_F(InkrayRender, BadArgumentsGiveOneLineAndExitTwo) {
   struct Case {
     std::string args, expected;
