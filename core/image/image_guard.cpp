@@ -19,9 +19,13 @@ bool starts_with(const Bytes& b, std::string_view prefix) {
   return b.size() >= prefix.size() && std::memcmp(b.data(), prefix.data(), prefix.size()) == 0;
 }
 
-// JPEG: every DHT segment before the scan declares at most 256 codes per table, and
-// each table fits in its segment (stb_image trusts both).
+// JPEG: every DHT segment declares at most 256 codes per table, and each table fits in
+// its segment (stb_image trusts both); every scan uses only Huffman tables defined
+// before it (stb_image decodes with an undefined table's uninitialised memory, and
+// its assertions abort on what it finds there).
 std::string jpeg_problem(const Bytes& b) {
+  bool defined[2][4] = {};  // [DC 0, AC 1][table 0-3]
+  bool progressive = false;
   std::size_t at = 2;  // after SOI
   while (at + 4 <= b.size()) {
     if (b[at] != 0xff) return "a JPEG segment does not start with a marker";
@@ -30,14 +34,18 @@ std::string jpeg_problem(const Bytes& b) {
       ++at;
       continue;
     }
-    if (marker == 0xda || marker == 0xd9) return {};  // start of scan, end of image
+    if (marker == 0xd9) return {};  // end of image
     const std::size_t length = (std::size_t(b[at + 2]) << 8) | b[at + 3];
     if (length < 2 || at + 2 + length > b.size()) return "a JPEG segment runs past the end of the file";
+    const std::size_t end = at + 2 + length;
+    if (marker == 0xc2) progressive = true;
     if (marker == 0xc4) {
       std::size_t p = at + 4;
-      const std::size_t end = at + 2 + length;
       while (p < end) {
         if (p + 17 > end) return "a JPEG Huffman table is cut short";
+        const int table_class = b[p] >> 4, id = b[p] & 15;
+        if (table_class > 1 || id > 3) return "a JPEG Huffman table has a bad class or number";
+        defined[table_class][id] = true;
         std::size_t codes = 0;
         for (int i = 1; i <= 16; ++i) codes += b[p + std::size_t(i)];
         if (codes > 256) return "a JPEG Huffman table declares " + std::to_string(codes) + " codes (at most 256)";
@@ -45,7 +53,27 @@ std::string jpeg_problem(const Bytes& b) {
         if (p > end) return "a JPEG Huffman table runs past its segment";
       }
     }
-    at += 2 + length;
+    if (marker == 0xda) {
+      // Ns, then Ns (component, DC table << 4 | AC table), then Ss, Se, Ah/Al. A
+      // progressive scan codes DC (Ss = 0) or AC coefficients, with that class only.
+      const std::size_t components = at + 4 < end ? b[at + 4] : 0;
+      const std::size_t spectral = at + 5 + 2 * components;
+      if (components == 0 || spectral >= end) return "a JPEG scan header is cut short";
+      const bool dc = !progressive || b[spectral] == 0, ac = !progressive || b[spectral] != 0;
+      for (std::size_t c = 0; c < components; ++c) {
+        const std::uint8_t tables = b[at + 6 + 2 * c];
+        if ((dc && !defined[0][(tables >> 4) & 3]) || (ac && !defined[1][tables & 3]))
+          return "a JPEG scan uses a Huffman table the file does not define";
+      }
+      // The entropy-coded data runs to the next marker that is not a stuffed 0xff00
+      // or a restart marker.
+      std::size_t p = end;
+      while (p + 1 < b.size() && !(b[p] == 0xff && b[p + 1] != 0x00 && (b[p + 1] < 0xd0 || b[p + 1] > 0xd7))) ++p;
+      if (p + 1 >= b.size()) return {};  // the data runs to the end: stb stops there
+      at = p;
+      continue;
+    }
+    at = end;
   }
   return {};
 }

@@ -23,7 +23,8 @@ const fs::path kHostile = fs::path(INKRAY_SOURCE_DIR) / "tests" / "fuzz" / "cras
 // Each of these hangs stb_image, overflows its heap or its integers, or is UB in it.
 TEST(ImageGuard, FilesThatBreakTheDecoderAreRefusedWithTheirName) {
   for (const char* name : {"stb_hdr_rle_zero_run_hang.hdr", "stb_jpeg_dht_overflow.jpg",
-                           "stb_pgm16_heap_overread.pgm", "stb_pnm_header_int_overflow.ppm"}) {
+                           "stb_jpeg_undefined_huffman_table.jpg", "stb_pgm16_heap_overread.pgm",
+                           "stb_pnm_header_int_overflow.ppm"}) {
     SCOPED_TRACE(name);
     RgbImage image;
     std::string error;
@@ -39,6 +40,10 @@ TEST(ImageGuard, FilesThatBreakTheDecoderAreRefusedWithTheirName) {
   testing::write_file(dir / "zero.hdr", std::string("#?RADIANCE\n\n-Y 1 +X 8\n\x02\x02\x00\x08\x00\x01", 28));
   EXPECT_FALSE(image_safe_to_decode(dir / "zero.hdr", &error));
   EXPECT_NE(error.find("an HDR scanline has a run of length 0"), std::string::npos) << error;
+  // A scan using a Huffman table never defined: stb decodes with uninitialised memory,
+  // and its assertions abort or not depending on what the heap held before.
+  EXPECT_FALSE(image_safe_to_decode(kHostile / "stb_jpeg_undefined_huffman_table.jpg", &error));
+  EXPECT_NE(error.find("a JPEG scan uses a Huffman table the file does not define"), std::string::npos) << error;
   EXPECT_FALSE(image_safe_to_decode(kHostile / "stb_pnm_header_int_overflow.ppm", &error));
   EXPECT_NE(error.find("not a PNG, JPEG, HDR, BMP or TGA image"), std::string::npos) << error;
   // A PNG whose IDAT is empty: stb copies from a null pointer (harmless in practice);
@@ -87,6 +92,17 @@ TEST(ImageGuard, EveryDocumentedFormatStillLoads) {
     ASSERT_TRUE(read_image(dir / name, true, &image, &error)) << error;
     EXPECT_EQ(image.width, w);
     EXPECT_EQ(image.height, h);
+  }
+  // JPEGs of the forms stb does not write: progressive (Huffman tables between scans,
+  // each scan with one class of them) and 4:2:0 subsampled, both made by ImageMagick.
+  for (const char* name : {"progressive.jpg", "baseline_420.jpg"}) {
+    SCOPED_TRACE(name);
+    RgbImage image;
+    std::string error;
+    ASSERT_TRUE(read_image(fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "images" / name, true, &image, &error))
+        << error;
+    EXPECT_EQ(image.width, 24);
+    EXPECT_EQ(image.height, 16);
   }
   // And the textures and brushes the project ships.
   for (const fs::path& folder : {fs::path(INKRAY_SOURCE_DIR) / "scenes" / "textures",
