@@ -76,5 +76,30 @@ TEST(FuzzCorpus, ImageReader) {
   replay("image_reader", fuzz_image_reader);
 }
 
+TEST(FuzzCorpus, GraphCompile) {
+  EXPECT_FALSE(inputs_of("graph_compile").empty());
+  replay("graph_compile", fuzz_graph_compile);
+}
+
+TEST(FuzzCorpus, PartialReader) {
+  EXPECT_FALSE(inputs_of("partial_reader").empty());
+  replay("partial_reader", fuzz_partial_reader);
+}
+
+TEST(FuzzCorpus, CheckpointReader) {
+  EXPECT_FALSE(inputs_of("checkpoint_reader").empty());
+  replay("checkpoint_reader", fuzz_checkpoint_reader);
+}
+
+TEST(FuzzCorpus, LineDecisionsReader) {
+  EXPECT_FALSE(inputs_of("line_decisions_reader").empty());
+  replay("line_decisions_reader", fuzz_line_decisions_reader);
+}
+
+TEST(FuzzCorpus, AnimationTracks) {
+  EXPECT_FALSE(inputs_of("animation_tracks").empty());
+  replay("animation_tracks", fuzz_animation_tracks);
+}
+
 }  // namespace
 }  // namespace inkray

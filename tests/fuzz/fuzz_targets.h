@@ -12,6 +12,11 @@ namespace inkray {
 int fuzz_scene_reader(const std::uint8_t* data, std::size_t size);
 int fuzz_obj_loader(const std::uint8_t* data, std::size_t size);
 int fuzz_image_reader(const std::uint8_t* data, std::size_t size);
+int fuzz_graph_compile(const std::uint8_t* data, std::size_t size);
+int fuzz_partial_reader(const std::uint8_t* data, std::size_t size);
+int fuzz_checkpoint_reader(const std::uint8_t* data, std::size_t size);
+int fuzz_line_decisions_reader(const std::uint8_t* data, std::size_t size);
+int fuzz_animation_tracks(const std::uint8_t* data, std::size_t size);
 
 // Defined by whoever links the harnesses: fuzz_entry.cpp aborts, so libFuzzer saves the
 // input as a crash; the replay test throws, so it can name the file and go on.

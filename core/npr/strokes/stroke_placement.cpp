@@ -147,7 +147,15 @@ class CandidateGrid {
     uint32_t accepted;
   };
 
-  int64_t cell_of(float v) const { return int64_t(std::floor(double(v) * double(inv_cell_))); }
+  // Clamped, so a surface absurdly large against its spacing (a scale keyed to 1e30 at
+  // the rest frame) shares the outermost cells rather than overflowing the integer;
+  // the neighbours' coordinates (one more either side) stay representable too.
+  int64_t cell_of(float v) const {
+    constexpr double kLimit = double(int64_t(1) << 60);
+    const double cell = std::floor(double(v) * double(inv_cell_));
+    if (!(cell > -kLimit)) return -int64_t(1) << 60;  // NaN too
+    return int64_t(std::min(cell, kLimit));
+  }
   Coord coord_of(const Point3& p) const { return {cell_of(p.x), cell_of(p.y), cell_of(p.z)}; }
   static uint64_t hash(const Coord& c) {
     return mix64(uint64_t(c.x) * 0x9e3779b97f4a7c15ULL ^ uint64_t(c.y) * 0xc2b2ae3d27d4eb4fULL ^
