@@ -50,9 +50,9 @@ inline constexpr float kFadeEnd = 0.3f;
 float stroke_offset(const StrokeSurface& surface, const StrokeEmitterDesc& emitter);
 
 // Grows one stroke per root (in parallel; the result does not depend on the
-// thread count) and builds the ribbons (docs/strokes.md, "Ribbons"). colors[i]
-// is stroke i's vertex colour. Each vertex is a surface point lifted along the
-// normal there by the offset plus the deepest a chord between neighbouring
+// thread count) and builds the ribbons (docs/strokes.md, "Ribbons follow the
+// surface"). colors[i] is stroke i's vertex colour. Each vertex is a surface point
+// lifted along the normal there by the offset plus the deepest a chord between neighbouring
 // vertices can dip below the surface; which stroke lies on top is the
 // renderer's (painting order, AlphaMask::paint), not a matter of height. Parts
 // of a ribbon whose growth left the surface are cut; parts standing off the
