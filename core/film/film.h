@@ -11,6 +11,7 @@
 
 #include "core/image/rgb_image.h"
 #include "core/math/hash.h"
+#include "core/math/pixel_window.h"
 #include "core/integrator/first_hit.h"
 #include "core/npr/outlines/line_types.h"
 
@@ -49,16 +50,6 @@ struct AovSet {
   // AOVs that are averaged over the samples that hit something.
   bool averages_hits() const { return has(Aov::albedo) || has(Aov::normal) || has(Aov::depth) || has(Aov::toon_band); }
   AovSet first_hit() const { return {bits & ((1u << uint32_t(Aov::outline)) - 1u)}; }
-};
-
-// A pixel window [x0,x1) x [y0,y1); empty means none.
-struct PixelWindow {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  int width() const { return x1 - x0; }
-  int height() const { return y1 - y0; }
-  bool empty() const { return x1 <= x0 || y1 <= y0; }
-  bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
-  bool operator==(const PixelWindow&) const = default;
 };
 
 // The outline buffers' sums of LineSample, in double like the radiance.

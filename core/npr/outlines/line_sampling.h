@@ -18,8 +18,9 @@
 // it then traces exactly what a render of every pass would have.
 #pragma once
 
-#include "core/film/film.h"
+#include "core/math/pixel_window.h"
 #include "core/npr/outlines/line_detector.h"
+#include "core/npr/outlines/line_types.h"
 
 #include <cstdint>
 #include <vector>
