@@ -166,6 +166,25 @@ std::optional<LightSample> sample_environment(const EnvironmentLight& env, const
   return s;
 }
 
+// The solid-angle density with which sample_light picks the direction to `on_light`,
+// one overload per light that is not a delta (LightTraits): a new kind of area light
+// does not compile until it has one.
+float solid_angle_pdf(const MeshAreaLight& m, const LightReference& ref, const SurfaceInteraction& on_light) {
+  return area_to_solid_angle(1.f / m.area, ref.p, on_light);
+}
+float solid_angle_pdf(const RectAreaLight& r, const LightReference& ref, const SurfaceInteraction& on_light) {
+  if (const auto solid = rect_solid_angle(r, ref.p)) return float(1.0 / solid->solid_angle);
+  return area_to_solid_angle(1.f / (r.width * r.height), ref.p, on_light);
+}
+float solid_angle_pdf(const SphereAreaLight& s, const LightReference& ref, const SurfaceInteraction& on_light) {
+  const float cos_max = sphere_cos_max(s, ref.p);
+  if (cos_max > 0.f) return uniform_cone_pdf(cos_max);
+  return area_to_solid_angle(1.f / (4.f * kPi * s.radius * s.radius), ref.p, on_light);
+}
+float solid_angle_pdf(const EnvironmentLight&, const LightReference&, const SurfaceInteraction&) {
+  return uniform_sphere_pdf();
+}
+
 }  // namespace
 
 std::optional<LightSample> sample_light(const RenderScene& scene, const Light& light, const LightReference& ref,
@@ -199,6 +218,7 @@ std::optional<LightSample> sample_light(const RenderScene& scene, const Light& l
         } else if constexpr (std::is_same_v<T, SphereAreaLight>) {
           return sample_sphere(scene, l, ref, u);
         } else {
+          static_assert(std::is_same_v<T, EnvironmentLight>, "a kind of light sample_light does not handle");
           return sample_environment(l, ref, u);
         }
       },
@@ -207,18 +227,15 @@ std::optional<LightSample> sample_light(const RenderScene& scene, const Light& l
 
 float light_pdf(const RenderScene& /*scene*/, const Light& light, const LightReference& ref, const Vec3& /*wi*/,
                 const SurfaceInteraction& on_light) {
-  if (const auto* m = std::get_if<MeshAreaLight>(&light)) return area_to_solid_angle(1.f / m->area, ref.p, on_light);
-  if (const auto* r = std::get_if<RectAreaLight>(&light)) {
-    if (const auto solid = rect_solid_angle(*r, ref.p)) return float(1.0 / solid->solid_angle);
-    return area_to_solid_angle(1.f / (r->width * r->height), ref.p, on_light);
-  }
-  if (const auto* s = std::get_if<SphereAreaLight>(&light)) {
-    const float cos_max = sphere_cos_max(*s, ref.p);
-    if (cos_max > 0.f) return uniform_cone_pdf(cos_max);
-    return area_to_solid_angle(1.f / (4.f * kPi * s->radius * s->radius), ref.p, on_light);
-  }
-  if (std::holds_alternative<EnvironmentLight>(light)) return uniform_sphere_pdf();
-  return 0.f;
+  return std::visit(
+      [&](const auto& l) -> float {
+        if constexpr (LightTraits<std::decay_t<decltype(l)>>::delta) {
+          return 0.f;
+        } else {
+          return solid_angle_pdf(l, ref, on_light);
+        }
+      },
+      light);
 }
 
 float light_power(const RenderScene& scene, const Light& light) {
@@ -241,6 +258,7 @@ float light_power(const RenderScene& scene, const Light& light) {
           else area = 4.f * kPi * l.radius * l.radius;
           return kPi * (two_sided ? 2.f : 1.f) * area * luminance(material_average_emission(m));
         } else {
+          static_assert(std::is_same_v<T, EnvironmentLight>, "a kind of light light_power does not handle");
           const Color avg = (l.zenith + 2.f * l.horizon + l.nadir) * 0.25f;
           return 4.f * kPi * kPi * sqr(l.scene_radius) * luminance(avg);
         }

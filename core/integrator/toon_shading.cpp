@@ -39,12 +39,14 @@
 // by the cosine, not by its radiance).
 #include "core/integrator/toon_shading.h"
 
+#include "core/base/overloaded.h"
 #include "core/geometry/ray.h"
 #include "core/integrator/light_sampling.h"
 #include "core/math/frame.h"
 #include "core/sampling/warp.h"
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace inkray {
@@ -96,15 +98,14 @@ LightTerm environment_term(const RenderScene& scene, const EnvironmentLight& env
   return t;
 }
 
-LightTerm light_term(const RenderScene& scene, const Light& light, const ToonMaterial& m, const ToonHit& hit,
-                     Vec2 u, uint32_t* rays) {
-  if (const auto* env = std::get_if<EnvironmentLight>(&light))
-    return environment_term(scene, *env, m, hit, u, rays);
+// A light sampled for its direction: `reference`, when given, is what a surface facing
+// it would receive, else the sample's own unshadowed irradiance is.
+LightTerm sampled_term(const RenderScene& scene, const Light& light, const ToonHit& hit, Vec2 u, uint32_t* rays,
+                       std::optional<Color> reference) {
   LightTerm t;
   auto ls = sample_light(scene, light, hit.ref, u);
-  if (const auto* spot = std::get_if<SpotLight>(&light)) {
-    const Vec3 d = spot->position - hit.ref.p;
-    t.reference = spot->intensity / std::max(glm::dot(d, d), 1e-20f);
+  if (reference) {
+    t.reference = *reference;
   } else if (ls) {
     t.reference = ls->radiance / ls->pdf;
   }
@@ -119,6 +120,29 @@ LightTerm light_term(const RenderScene& scene, const Light& light, const ToonMat
   t.received = (ls->radiance / ls->pdf) * cos_n;
   t.highlight = true;
   return t;
+}
+
+// Every kind of light, with no catch-all (core/lights/light.h, LightTraits): the sky in
+// closed form, a spot against the light on its axis (so its cone's falloff reads as a
+// falling light level), the others against what their sample delivers.
+LightTerm light_term(const RenderScene& scene, const Light& light, const ToonMaterial& m, const ToonHit& hit,
+                     Vec2 u, uint32_t* rays) {
+  const auto sampled = [&](std::optional<Color> reference = std::nullopt) {
+    return sampled_term(scene, light, hit, u, rays, reference);
+  };
+  return std::visit(Overloaded{
+                        [&](const EnvironmentLight& env) { return environment_term(scene, env, m, hit, u, rays); },
+                        [&](const SpotLight& spot) {
+                          const Vec3 d = spot.position - hit.ref.p;
+                          return sampled(spot.intensity / std::max(glm::dot(d, d), 1e-20f));
+                        },
+                        [&](const PointLight&) { return sampled(); },
+                        [&](const DirectionalLight&) { return sampled(); },
+                        [&](const MeshAreaLight&) { return sampled(); },
+                        [&](const RectAreaLight&) { return sampled(); },
+                        [&](const SphereAreaLight&) { return sampled(); },
+                    },
+                    light);
 }
 
 float ramp_v(const ToonMaterial& m, const ToonHit& hit) {

@@ -61,6 +61,32 @@ struct EnvironmentLight {
 using Light = std::variant<PointLight, SpotLight, DirectionalLight, MeshAreaLight, RectAreaLight, SphereAreaLight,
                            EnvironmentLight>;
 
+// What kind of light each alternative is. There is no primary template: a light added
+// to `Light` does not compile until it says what it is here, and every dispatch over
+// lights (light sampling, light_pdf, light_power, toon shading) visits every kind with
+// no catch-all, so it does not compile until each handles it.
+template <class L>
+struct LightTraits;
+// A delta light (a point, spot or directional light) is reached only by sampling it:
+// no BSDF sample hits it, so its solid-angle density is never asked for.
+template <> struct LightTraits<PointLight> { static constexpr bool delta = true; };
+template <> struct LightTraits<SpotLight> { static constexpr bool delta = true; };
+template <> struct LightTraits<DirectionalLight> { static constexpr bool delta = true; };
+template <> struct LightTraits<MeshAreaLight> { static constexpr bool delta = false; };
+template <> struct LightTraits<RectAreaLight> { static constexpr bool delta = false; };
+template <> struct LightTraits<SphereAreaLight> { static constexpr bool delta = false; };
+template <> struct LightTraits<EnvironmentLight> { static constexpr bool delta = false; };
+
+namespace light_detail {
+template <class V>
+struct EveryLightHasTraits;
+template <class... Ls>
+struct EveryLightHasTraits<std::variant<Ls...>> {
+  static constexpr bool value = ((LightTraits<Ls>::delta || !LightTraits<Ls>::delta) && ...);
+};
+}  // namespace light_detail
+static_assert(light_detail::EveryLightHasTraits<Light>::value);
+
 // The receiving point: where the shadow ray starts.
 struct LightReference {
   Point3 p{0.f};
