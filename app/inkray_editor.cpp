@@ -4,6 +4,7 @@
 //          [--node-editor MATERIAL --node-layout OUT.txt] [--drop FILE] [SCENE.json]
 //   inkray --measure-edits N [--edit KIND,...] [SCENE.json]   (edit latency, frame
 //   times and samples kept, per kind of edit)
+#include "app/cli_numbers.h"
 #include "app/edit_measurement.h"
 #include "core/document/json_io.h"
 #include "core/image/image_io.h"
@@ -96,6 +97,12 @@ void usage() {
 }
 
 bool parse(int argc, char** argv, Options* o) {
+  // A number in its range, or the message naming the option and what it expected.
+  const auto number = [](std::string_view option, const char* text, auto lo, auto hi, auto* out) {
+    const std::string problem = inkray::cli::read_option_number(option, text, lo, hi, out);
+    if (!problem.empty()) std::fprintf(stderr, "inkray: %s\n", problem.c_str());
+    return problem.empty();
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
@@ -106,9 +113,9 @@ bool parse(int argc, char** argv, Options* o) {
     } else if (a == "--screenshot" && (v = value())) {
       o->screenshot = v;
     } else if (a == "--frames" && (v = value())) {
-      o->frames = std::atoi(v);
+      if (!number("--frames", v, 0, 1000000, &o->frames)) return false;
     } else if (a == "--measure-edits" && (v = value())) {
-      o->measure_edits = std::atoi(v);
+      if (!number("--measure-edits", v, 1, 100000, &o->measure_edits)) return false;
     } else if (a == "--edit" && (v = value())) {
       const std::string list = v;
       for (size_t begin = 0; begin <= list.size();) {
@@ -124,7 +131,7 @@ bool parse(int argc, char** argv, Options* o) {
         begin = end + 1;
       }
     } else if (a == "--threads" && (v = value())) {
-      o->threads = std::atoi(v);
+      if (!number("--threads", v, 1, 1024, &o->threads)) return false;
     } else if (a == "--select" && (v = value())) {
       o->select = v;
     } else if (a == "--node-editor" && (v = value())) {
@@ -134,12 +141,11 @@ bool parse(int argc, char** argv, Options* o) {
     } else if (a == "--size" && (v = value())) {
       if (std::sscanf(v, "%dx%d", &o->width, &o->height) != 2) return false;
     } else if (a == "--window-size" && i + 2 < argc) {
-      o->width = std::atoi(argv[++i]);
-      o->height = std::atoi(argv[++i]);
-      if (o->width < 64 || o->height < 64) return false;
+      if (!number("--window-size", argv[++i], 64, 16384, &o->width) ||
+          !number("--window-size", argv[++i], 64, 16384, &o->height))
+        return false;
     } else if (a == "--ui-scale" && (v = value())) {
-      o->ui_scale = float(std::atof(v));
-      if (!(o->ui_scale >= 0.5f && o->ui_scale <= 3.f)) return false;
+      if (!number("--ui-scale", v, 0.5f, 3.f, &o->ui_scale)) return false;
     } else if (a == "--widget-report" && (v = value())) {
       o->widget_report = v;
     } else if (a == "--export" && (v = value())) {

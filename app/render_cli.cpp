@@ -1,5 +1,6 @@
 #include "app/render_cli.h"
 
+#include "app/cli_numbers.h"
 #include "core/film/film.h"
 #include "core/image/image_io.h"
 #include "core/io/output_set.h"
@@ -91,18 +92,7 @@ Exit status: 0 on success, 1 on a scene or output error, 2 on bad arguments.
 
 namespace {
 
-template <class T>
-bool parse_number(std::string_view text, T* out) {
-  const char* end = text.data() + text.size();
-  if constexpr (std::is_floating_point_v<T>) {
-    // std::from_chars for double is available in GCC 12.
-    auto [ptr, ec] = std::from_chars(text.data(), end, *out);
-    return ec == std::errc() && ptr == end && std::isfinite(*out);
-  } else {
-    auto [ptr, ec] = std::from_chars(text.data(), end, *out);
-    return ec == std::errc() && ptr == end;
-  }
-}
+using cli::parse_number;
 
 // "8G", "512M", "64k", "1000000": bytes, at least 1 MiB and below 2^60.
 std::optional<std::uint64_t> parse_size(std::string_view text) {
