@@ -21,7 +21,7 @@ float distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
 struct RowCollector {
   std::vector<NodeRow>* rows;
   template <class F>
-  void operator()(const Param& p, F&) {
+  void operator()(const Param& p, const F&) {
     rows->push_back({NodeRow::Kind::param, p.name, socket_type_of(p.kind), p.kind});
   }
 };
@@ -61,9 +61,8 @@ std::vector<NodeRow> node_rows(const NodeVariant& node) {
   for (const SocketDecl& s : node_outputs(node)) rows.push_back({NodeRow::Kind::output, s.name, s.type});
   std::visit(
       [&]<class T>(const T& d) {
-        T copy = d;
         RowCollector collector{&rows};
-        visit_params(copy, collector);
+        visit_params(d, collector);
         if constexpr (graph_detail::HasLinkInputs<T>) {
           for (const SocketDecl& s : T::link_inputs)
             rows.push_back({NodeRow::Kind::link_input, s.name, s.type});

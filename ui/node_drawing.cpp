@@ -62,7 +62,7 @@ bool color_bar(const Param& p, Color& c, float width) {
   return changed;
 }
 
-// Draws a node's parameter rows in visit_params order: a widget at each unlinked row.
+// Draws a node's parameter rows in parameter table order: a widget at each unlinked row.
 struct RowWidgets {
   const NodeBox& box;
   const std::vector<std::string_view>& linked;

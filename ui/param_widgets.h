@@ -1,5 +1,5 @@
 // The editor's widgets, generated from the parameter lists (docs/architecture.md,
-// "The shape"): a visitor over visit_params that draws one ImGui widget per Param
+// "Parameter tables"): a visitor over a parameter table that draws one ImGui widget per Param
 // with its label, slider range and plain-text tooltip (core/document/param_text.h),
 // and records which parameter changed. References are combos of the scene's names,
 // paths a field with a browse button (path_field.h). Given a KeyTargets, keyable

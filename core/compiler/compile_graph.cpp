@@ -4,6 +4,7 @@
 // allocation turn them into the program.
 #include "core/compiler/compile_graph.h"
 
+#include "core/compiler/closure_inputs.h"
 #include "core/compiler/graph_checks.h"
 #include "core/materials/shader_eval.h"
 
@@ -128,7 +129,7 @@ struct ValuedInputs {
   std::vector<const ColorInput*> textures;
   std::vector<Param> params;
   template <class F>
-  void operator()(const Param& p, F& field) {
+  void operator()(const Param& p, const F& field) {
     if (!socket_type_of(p.kind)) return;
     params.push_back(p);
     const ColorInput* texture = nullptr;
@@ -167,7 +168,7 @@ Vec3 within_range(const Param& p, const Vec3& v, const Vec3& fallback) {
 template <class T>
 ValuedInputs valued_inputs_of(const T& desc) {
   ValuedInputs valued;
-  visit_params(const_cast<T&>(desc), valued);  // the visitor only reads
+  visit_params(desc, valued);
   return valued;
 }
 
@@ -207,7 +208,7 @@ ClosureInputBounds Lowering::bounds(size_t node, const T& desc, size_t index) {
 // An unlinked side of a mix or add: a black surface that ends the path. It has no
 // inputs, so materialise leaves its template as it is.
 uint32_t Lowering::black_leaf() {
-  leaves_.push_back({UnlitMaterial{ConstantTexture{Color(0.f)}}, {}, {}, true});
+  leaves_.push_back({UnlitMaterial{ConstantTexture{Color(0.f)}}, {}, true});
   leaf_inputs_.emplace_back();
   closures_.push_back({ClosureNode::Kind::leaf, uint16_t(leaves_.size() - 1)});
   mix_fac_.push_back(kNone);
@@ -402,13 +403,17 @@ void Lowering::lower_node(size_t node) {
           auto tmpl = compile_closure_template(MaterialVariant(d), base_, assets_, &error);
           if (!tmpl) return fail(node, error);
           std::vector<VReg> regs;
-          std::vector<ClosureInputBounds> leaf_bounds;
+          std::vector<ClosureInput> inputs;
           for (size_t i = 0; i < c_.inputs[node].size(); ++i) {
-            if (!c_.inputs[node][i].has_value) continue;
+            const SocketInfo& socket = c_.inputs[node][i];
+            if (!socket.has_value) continue;
+            const ClosureSetter set = closure_input_setter(T::type_name, socket.name);
+            if (!set) return fail(node, "input \"" + std::string(socket.name) + "\" of a " +
+                                            std::string(T::type_name) + " node has no place in its material");
             regs.push_back(in(i));
-            leaf_bounds.push_back(bounds(node, d, i));
+            inputs.push_back({0, bounds(node, d, i), set});
           }
-          leaves_.push_back({std::move(*tmpl), {}, std::move(leaf_bounds)});
+          leaves_.push_back({std::move(*tmpl), std::move(inputs)});
           leaf_inputs_.push_back(std::move(regs));
           closures_.push_back({ClosureNode::Kind::leaf, uint16_t(leaves_.size() - 1)});
           mix_fac_.push_back(kNone);
@@ -515,10 +520,10 @@ std::shared_ptr<ShaderProgram> Lowering::allocate() {
   }
   for (size_t l = 0; l < leaves_.size(); ++l) {
     ClosureLeaf& leaf = leaves_[l];
-    leaf.inputs.clear();
     leaf.constant = true;
-    for (VReg r : leaf_inputs_[l]) {
-      leaf.inputs.push_back(phys[r]);
+    for (size_t k = 0; k < leaf.inputs.size(); ++k) {
+      const VReg r = leaf_inputs_[l][k];
+      leaf.inputs[k].reg = uint16_t(phys[r]);
       leaf.constant = leaf.constant && is_constant_[r];
     }
     // Known now: set once here rather than per hit.

@@ -39,47 +39,18 @@ std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images
   return ImageTexture{std::move(image), img.scale, average};
 }
 
-ToonRampLookup ramp_lookup(ToonRampAxis axis) {
-  switch (axis) {
-    case ToonRampAxis::depth:
-      return ToonRampLookup::depth;
-    case ToonRampAxis::facing:
-      return ToonRampLookup::facing;
-    default:
-      return ToonRampLookup::none;
-  }
-}
-
 std::optional<Material> compile_toon(const ToonDesc& d, ImageCache& images, std::string* error) {
   auto color = compile_color(d.color, images, error);
   if (!color) return std::nullopt;
   ToonMaterial m;
+  static_cast<ToonParams&>(m) = d;  // the settings, whole
   m.color = std::move(*color);
-  m.shadow_color = d.shadow_color;
-  m.bands = d.bands;
-  m.threshold = d.threshold;
-  m.softness = d.softness;
   if (!d.ramp.empty()) m.ramp = std::make_shared<const std::vector<Color>>(d.ramp);
   if (!d.ramp_image.empty()) {
     // A ramp holds colours, so 8-bit files are sRGB like colour textures.
     m.ramp_image = images.get(ImageTextureDesc{d.ramp_image, Color(1.f), true}, error);
     if (!m.ramp_image) return std::nullopt;
   }
-  m.ramp_axis = ramp_lookup(d.ramp_axis);
-  m.ramp_near = d.ramp_near;
-  m.ramp_far = d.ramp_far;
-  m.specular = d.specular;
-  m.specular_color = d.specular_color;
-  m.specular_size = d.specular_size;
-  m.shininess = d.shininess;
-  m.rim = d.rim;
-  m.rim_color = d.rim_color;
-  m.rim_width = d.rim_width;
-  m.rim_threshold = d.rim_threshold;
-  m.environment = d.environment;
-  m.environment_shadows = d.environment_shadows;
-  m.receive_indirect = d.receive_indirect;
-  m.bounce_indirect = d.bounce_indirect;
   return m;
 }
 

@@ -73,8 +73,12 @@ double clamp_to(const Param& p, double x) {
   return std::clamp(x, std::max(p.min, -3.0e38), std::min(p.max, 3.0e38));
 }
 
+// T is const when the walk only reads (Access::Op::probe and read): the writes
+// below exist only for a mutable field.
 template <class T>
 void leaf(Access& a, const Param& p, T& field, std::string_view name) {
+  using U = std::remove_const_t<T>;
+  constexpr bool writable = !std::is_const_v<T>;
   const int width = key_width(p.kind);
   if (p.kind == ParamKind::group) {
     a.error = in_quotes(name) + " is a group of parameters; name one of them";
@@ -85,24 +89,26 @@ void leaf(Access& a, const Param& p, T& field, std::string_view name) {
     return;
   }
   using Op = Access::Op;
-  if constexpr (std::is_same_v<T, float>) {
+  const bool write = a.op == Op::write;
+  if constexpr (std::is_same_v<U, float>) {
     if (a.op == Op::read) *a.out = {double(field)};
-    if (a.op == Op::write) field = float(clamp_to(p, a.in[0]));
-  } else if constexpr (std::is_same_v<T, int>) {
+    if constexpr (writable) if (write) field = float(clamp_to(p, a.in[0]));
+  } else if constexpr (std::is_same_v<U, int>) {
     if (a.op == Op::read) *a.out = {double(field)};
-    if (a.op == Op::write) field = int(std::lround(clamp_to(p, a.in[0])));
-  } else if constexpr (std::is_same_v<T, bool>) {
+    if constexpr (writable) if (write) field = int(std::lround(clamp_to(p, a.in[0])));
+  } else if constexpr (std::is_same_v<U, bool>) {
     if (a.op == Op::read) *a.out = {field ? 1.0 : 0.0};
-    if (a.op == Op::write) field = a.in[0] >= 0.5;
-  } else if constexpr (std::is_enum_v<T>) {
+    if constexpr (writable) if (write) field = a.in[0] >= 0.5;
+  } else if constexpr (std::is_enum_v<U>) {
     if (a.op == Op::read) *a.out = {double(field)};
-    if (a.op == Op::write) field = T(int(std::lround(clamp_to(p, a.in[0]))));
-  } else if constexpr (std::is_same_v<T, Vec3>) {
+    if constexpr (writable) if (write) field = U(int(std::lround(clamp_to(p, a.in[0]))));
+  } else if constexpr (std::is_same_v<U, Vec3>) {
     if (a.op == Op::read) *a.out = {field.x, field.y, field.z};
-    if (a.op == Op::write)
-      for (int i = 0; i < 3; ++i) field[i] = float(clamp_to(p, a.in[size_t(i)]));
-  } else if constexpr (std::is_same_v<T, ColorInput>) {
-    Color* constant = std::get_if<Color>(&field);
+    if constexpr (writable)
+      if (write)
+        for (int i = 0; i < 3; ++i) field[i] = float(clamp_to(p, a.in[size_t(i)]));
+  } else if constexpr (std::is_same_v<U, ColorInput>) {
+    auto* constant = std::get_if<Color>(&field);
     if (!constant) {
       a.error = in_quotes(name) + " is a texture here; only a constant colour can be keyed";
       return;
@@ -148,7 +154,7 @@ void descend(Access& a, const Param& p, T& field, Path rest) {
   if (rest.empty()) return leaf(a, p, field, p.name);
   if constexpr (ParamGroup<T>) {
     descend_struct(a, field, rest, p.name);
-  } else if constexpr (is_variant<T>) {
+  } else if constexpr (is_variant<std::remove_const_t<T>>) {
     std::visit(
         [&](auto& alternative) {
           if constexpr (ParamGroup<std::decay_t<decltype(alternative)>>) {
@@ -163,13 +169,13 @@ void descend(Access& a, const Param& p, T& field, Path rest) {
   }
 }
 
-template <class Item>
-Item* by_name(std::vector<Item>& items, std::string_view name, const NameIndex::Map* index) {
+template <class Items>
+auto by_name(Items& items, std::string_view name, const NameIndex::Map* index) -> decltype(&items[0]) {
   if (index) {
     const auto found = index->find(name);
     return found == index->end() ? nullptr : &items[found->second];
   }
-  for (Item& item : items)
+  for (auto& item : items)
     if (item.name == name) return &item;
   return nullptr;
 }
@@ -177,7 +183,8 @@ Item* by_name(std::vector<Item>& items, std::string_view name, const NameIndex::
 constexpr Param kScale = vector("scale", "Scale factors along x, y, z");
 constexpr Param kTranslate = vector("translate", "Offset applied last");
 
-void descend_transform(Access& a, TransformDesc& t, Path rest) {
+template <class Transform>
+void descend_transform(Access& a, Transform& t, Path rest) {
   if (rest.empty()) {
     a.error = "\"transform\" is a group; name scale, translate or rotate/INDEX/degrees";
     return;
@@ -202,14 +209,14 @@ void descend_transform(Access& a, TransformDesc& t, Path rest) {
   a.error = "\"transform\" has scale, translate and rotate/INDEX/(degrees|axis), not " + in_quotes(rest[0]);
 }
 
-template <class Item, class Next>
-void named(Access& a, std::vector<Item>& items, const NameIndex::Map NameIndex::*index, Path rest,
-           std::string_view section, Next next) {
+template <class Items, class Next>
+void named(Access& a, Items& items, const NameIndex::Map NameIndex::*index, Path rest, std::string_view section,
+           Next next) {
   if (rest.empty()) {
     a.error = in_quotes(section) + " needs a name: " + std::string(section) + "/NAME/...";
     return;
   }
-  Item* item = by_name(items, rest[0], a.names ? &(a.names->*index) : nullptr);
+  auto* item = by_name(items, rest[0], a.names ? &(a.names->*index) : nullptr);
   if (!item) {
     a.error = "no entry named " + in_quotes(rest[0]) + " in " + in_quotes(section);
     return;
@@ -221,7 +228,9 @@ void named(Access& a, std::vector<Item>& items, const NameIndex::Map NameIndex::
   next(*item, rest.subspan(1));
 }
 
-void resolve(SceneDesc& desc, std::string_view path, Access& a) {
+// Scene is const for a probe or a read, so only a write can change the document.
+template <class Scene>
+void resolve(Scene& desc, std::string_view path, Access& a) {
   const std::vector<std::string_view> parts = split(path);
   const Path all(parts);
   const std::string_view head = all[0];
@@ -238,7 +247,7 @@ void resolve(SceneDesc& desc, std::string_view path, Access& a) {
   if (head == "outlines") return descend_struct(a, desc.outlines, rest, "outlines");
   if (head == "environment") return descend(a, group("environment", ""), desc.environment, rest);
   if (head == "objects") {
-    return named(a, desc.objects, &NameIndex::objects, rest, "objects", [&](ObjectDesc& o, Path r) {
+    return named(a, desc.objects, &NameIndex::objects, rest, "objects", [&](auto& o, Path r) {
       if (r[0] == "transform") return descend_transform(a, o.transform, r.subspan(1));
       if (r[0] == "shape") return descend(a, group("shape", ""), o.shape, r.subspan(1));
       descend_struct(a, o, r, o.name);
@@ -246,17 +255,17 @@ void resolve(SceneDesc& desc, std::string_view path, Access& a) {
   }
   if (head == "lights") {
     return named(a, desc.lights, &NameIndex::lights, rest, "lights",
-                 [&](LightDesc& l, Path r) { descend(a, group(l.name, ""), l.data, r); });
+                 [&](auto& l, Path r) { descend(a, group(l.name, ""), l.data, r); });
   }
   if (head == "materials") {
-    return named(a, desc.materials, &NameIndex::materials, rest, "materials", [&](MaterialDesc& m, Path r) {
+    return named(a, desc.materials, &NameIndex::materials, rest, "materials", [&](auto& m, Path r) {
       if (r[0] == "lines") return descend(a, group("lines", ""), m.lines, r.subspan(1));
       if (auto* graph = std::get_if<GraphDesc>(&m.data)) {
         if (r[0] != "nodes" || r.size() < 3) {
           a.error = "a graph material's parameters are its nodes': materials/" + m.name + "/nodes/NODE_ID/PARAM";
           return;
         }
-        for (GraphNodeDesc& node : graph->nodes)
+        for (auto& node : graph->nodes)
           if (node.id == r[1]) return descend(a, group(node.id, ""), node.data, r.subspan(2));
         a.error = "graph material " + in_quotes(m.name) + " has no node with id " + in_quotes(r[1]);
         return;
@@ -265,7 +274,7 @@ void resolve(SceneDesc& desc, std::string_view path, Access& a) {
     });
   }
   if (head == "strokes") {
-    return named(a, desc.strokes, &NameIndex::strokes, rest, "strokes", [&](StrokeEmitterDesc& e, Path r) {
+    return named(a, desc.strokes, &NameIndex::strokes, rest, "strokes", [&](auto& e, Path r) {
       if (r[0] == "name" || r[0] == "object" || r[0] == "count" || r[0] == "seed") {
         // A stroke keeps its place and looks from frame to frame: what decides which
         // strokes exist is not animated.
@@ -348,8 +357,7 @@ std::optional<Param> probe(const SceneDesc& desc, std::string_view path, std::st
                            const NameIndex* names) {
   Access a;
   a.names = names;
-  // Probing only reads; the resolver is written once for both directions.
-  resolve(const_cast<SceneDesc&>(desc), path, a);
+  resolve(desc, path, a);
   if (!a.found && error) *error = a.error.empty() ? "cannot resolve " + in_quotes(path) : a.error;
   return a.found;
 }
@@ -382,7 +390,7 @@ bool read_target(const SceneDesc& desc, std::string_view path, std::vector<doubl
   Access a;
   a.op = Access::Op::read;
   a.out = value;
-  resolve(const_cast<SceneDesc&>(desc), path, a);
+  resolve(desc, path, a);
   return a.found.has_value();
 }
 

@@ -1,4 +1,4 @@
-// Finds path fields the way scene_checks does, through visit_params, so a new
+// Finds path fields the way scene_checks does, through the parameter tables, so a new
 // asset type needs no change here.
 #include "core/document/asset_paths.h"
 
@@ -13,24 +13,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using PathVisit = std::function<void(const AssetSite&, std::string& path)>;
-
+// Walks a scene, or a const one with const paths: Visit takes `std::string&` or
+// `const std::string&` accordingly.
+template <class Visit>
 struct PathFinder {
   std::string at;  // JSON path of the struct being visited
   const AssetSite& owner;
-  const PathVisit& f;
+  const Visit& f;
 
   template <class T>
   void operator()(const Param& p, T& field) {
-    if constexpr (std::is_same_v<T, std::string>) {
+    using U = std::remove_const_t<T>;
+    if constexpr (std::is_same_v<U, std::string>) {
       if (p.kind != ParamKind::path) return;
       AssetSite site = owner;
       site.at = child_path(at, p.name);
       site.type = p.file_type;
       f(site, field);
-    } else if constexpr (std::is_same_v<T, ColorInput>) {
+    } else if constexpr (std::is_same_v<U, ColorInput>) {
       visit_tagged(child_path(at, p.name), field);
-    } else if constexpr (std::is_same_v<T, std::vector<GraphNodeDesc>>) {
+    } else if constexpr (std::is_same_v<U, std::vector<GraphNodeDesc>>) {
       for (size_t i = 0; i < field.size(); ++i)
         visit_tagged(element_path(child_path(at, p.name), i), field[i].data);
     } else if constexpr (requires(PathFinder & inner) { visit_params(field, inner); }) {
@@ -48,7 +50,7 @@ struct PathFinder {
   void visit_tagged(const std::string& path, Variant& value) {
     std::visit(
         [&]<class A>(A& alternative) {
-          if constexpr (Tagged<A>) {
+          if constexpr (Tagged<std::remove_const_t<A>>) {
             PathFinder inner{path, owner, f};
             visit_params(alternative, inner);
           }
@@ -66,9 +68,9 @@ std::string rebase(const std::string& written, const fs::path& from, const fs::p
   return (relative.empty() ? target : relative).generic_string();
 }
 
-}  // namespace
-
-void for_each_asset_path(SceneDesc& scene, const PathVisit& f) {
+template <class Scene, class Visit>
+void walk_asset_paths(Scene& scene, const Visit& f) {
+  using Finder = PathFinder<Visit>;
   const auto section = [&](auto& items, const char* name, const char* noun, auto&& visit) {
     for (size_t i = 0; i < items.size(); ++i) {
       const AssetSite owner{{}, std::string(noun) + " " + in_quotes(items[i].name)};
@@ -76,28 +78,38 @@ void for_each_asset_path(SceneDesc& scene, const PathVisit& f) {
     }
   };
   const AssetSite environment{{}, "the environment"};
-  PathFinder{{}, environment, f}.visit_tagged("environment", scene.environment);
-  section(scene.materials, "materials", "material",
-          [&](const std::string& at, MaterialDesc& m, const AssetSite& owner) {
-            PathFinder{{}, owner, f}.visit_tagged(at, m.data);
-          });
+  Finder{{}, environment, f}.visit_tagged("environment", scene.environment);
+  section(scene.materials, "materials", "material", [&](const std::string& at, auto& m, const AssetSite& owner) {
+    Finder{{}, owner, f}.visit_tagged(at, m.data);
+  });
   section(scene.objects, "objects", "object",
-          [&](const std::string& at, ObjectDesc& o, const AssetSite& owner) {
-            PathFinder finder{at, owner, f};
+          [&](const std::string& at, auto& o, const AssetSite& owner) {
+            Finder finder{at, owner, f};
             visit_params(o, finder);
             finder.visit_tagged(at + ".shape", o.shape);
           });
-  section(scene.lights, "lights", "light", [&](const std::string& at, LightDesc& l, const AssetSite& owner) {
-    PathFinder{{}, owner, f}.visit_tagged(at, l.data);
+  section(scene.lights, "lights", "light", [&](const std::string& at, auto& l, const AssetSite& owner) {
+    Finder{{}, owner, f}.visit_tagged(at, l.data);
   });
   section(scene.strokes, "strokes", "stroke emitter",
-          [&](const std::string& at, StrokeEmitterDesc& s, const AssetSite& owner) {
+          [&](const std::string& at, auto& s, const AssetSite& owner) {
             // An emitter's one path is its brush image, read only by the image brush.
             AssetSite emitter = owner;
             emitter.in_use = s.brush == BrushKind::image;
-            PathFinder finder{at, emitter, f};
+            Finder finder{at, emitter, f};
             visit_params(s, finder);
           });
+}
+
+}  // namespace
+
+void for_each_asset_path(SceneDesc& scene, const std::function<void(const AssetSite&, std::string& path)>& f) {
+  walk_asset_paths(scene, f);
+}
+
+void for_each_asset_path(const SceneDesc& scene,
+                         const std::function<void(const AssetSite&, const std::string& path)>& f) {
+  walk_asset_paths(scene, f);
 }
 
 void rebase_asset_paths(SceneDesc& scene, const fs::path& from_dir, const fs::path& to_dir) {

@@ -26,6 +26,9 @@ struct AssetSite {
 // order: the environment, materials (colour inputs and graph nodes), objects,
 // lights, stroke emitters.
 void for_each_asset_path(SceneDesc& scene, const std::function<void(const AssetSite&, std::string& path)>& f);
+// The same walk over a scene it only reads.
+void for_each_asset_path(const SceneDesc& scene,
+                         const std::function<void(const AssetSite&, const std::string& path)>& f);
 
 // Rewrites every relative ParamKind::path field so that, resolved against
 // `to_dir`, it names the file it named resolved against `from_dir`. Absolute

@@ -41,9 +41,7 @@ std::vector<AssetReference> list_asset_references(const SceneDesc& scene) {
   const fs::path folder = scene_folder(scene);
   std::vector<AssetReference> references;
   std::map<fs::path, bool> on_disk;  // a file many objects share is looked up once
-  // The walk hands out mutable fields (visit_params does) and this one only reads
-  // them: cheaper than copying a scene of many objects on every check.
-  for_each_asset_path(const_cast<SceneDesc&>(scene), [&](const AssetSite& site, std::string& path) {
+  for_each_asset_path(scene, [&](const AssetSite& site, const std::string& path) {
     if (!site.in_use || path.empty()) return;
     const fs::path resolved = resolve(folder, path);
     if (resolved.empty()) return;

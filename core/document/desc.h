@@ -1,7 +1,7 @@
 // SceneDesc: the editable scene document (docs/architecture.md, "From JSON to
 // pixels"). Plain structs with defaults, references by name, serialised to JSON
-// by document/json_io. Every struct lists its parameters once in visit_params
-// (document/params.h).
+// by document/json_io. Every struct lists its parameters once in its ParamTable
+// (document/params.h; docs/architecture.md, "Parameter tables").
 // Closed sets are std::variants whose alternatives carry their JSON "type" tag.
 #pragma once
 
@@ -37,13 +37,21 @@ struct LineOverrideDesc {
   Color color{0.f};
   bool operator==(const LineOverrideDesc&) const = default;
 };
-template <class V> void visit_params(LineOverrideDesc& d, V& v) {
-  v(toggle("exclude", "This surface produces no outlines").labelled("No outlines"), d.exclude);
-  v(toggle("stop_lines", "Outlines are not seen through this mirror or glass").labelled("Hide lines behind"), d.stop_lines);
-  v(number("width_scale", 0, 100, "Multiplies the outline width on this surface").log_slider(0.1, 10), d.width_scale);
-  v(toggle("override_color", "Draw this surface's lines in `color`"), d.override_color);
-  v(color("color", 1e3, "Line colour when override_color is set").labelled("Line colour"), d.color);
-}
+template <>
+struct ParamTable<LineOverrideDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&LineOverrideDesc::exclude,
+          toggle("exclude", "This surface produces no outlines").labelled("No outlines")),
+      row(&LineOverrideDesc::stop_lines,
+          toggle("stop_lines", "Outlines are not seen through this mirror or glass")
+              .labelled("Hide lines behind")),
+      row(&LineOverrideDesc::width_scale,
+          number("width_scale", 0, 100, "Multiplies the outline width on this surface").log_slider(0.1, 10)),
+      row(&LineOverrideDesc::override_color,
+          toggle("override_color", "Draw this surface's lines in `color`")),
+      row(&LineOverrideDesc::color,
+          color("color", 1e3, "Line colour when override_color is set").labelled("Line colour"))};
+};
 
 struct MaterialDesc {
   std::string name;
@@ -59,10 +67,13 @@ struct SphereDesc {
   float radius = 1.f;
   bool operator==(const SphereDesc&) const = default;
 };
-template <class V> void visit_params(SphereDesc& d, V& v) {
-  v(point("center", "Centre in object space"), d.center);
-  v(number("radius", 1e-12, 1e12, "Radius in object space").log_slider(0.01, 100), d.radius);
-}
+template <>
+struct ParamTable<SphereDesc> {
+  static constexpr auto rows =
+      std::tuple{row(&SphereDesc::center, point("center", "Centre in object space")),
+                 row(&SphereDesc::radius,
+                     number("radius", 1e-12, 1e12, "Radius in object space").log_slider(0.01, 100))};
+};
 
 struct QuadDesc {
   static constexpr std::string_view type_name = "quad";
@@ -71,11 +82,13 @@ struct QuadDesc {
   Vec3 edge_v{0.f, 0.f, 1.f};  // normal = normalize(cross(edge_u, edge_v))
   bool operator==(const QuadDesc&) const = default;
 };
-template <class V> void visit_params(QuadDesc& d, V& v) {
-  v(point("corner", "One corner"), d.corner);
-  v(vector("edge_u", "First edge from the corner"), d.edge_u);
-  v(vector("edge_v", "Second edge; the front faces along cross(edge_u, edge_v)"), d.edge_v);
-}
+template <>
+struct ParamTable<QuadDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&QuadDesc::corner, point("corner", "One corner")),
+      row(&QuadDesc::edge_u, vector("edge_u", "First edge from the corner")),
+      row(&QuadDesc::edge_v, vector("edge_v", "Second edge; the front faces along cross(edge_u, edge_v)"))};
+};
 
 struct BoxDesc {
   static constexpr std::string_view type_name = "box";
@@ -83,10 +96,11 @@ struct BoxDesc {
   Point3 max{1.f};
   bool operator==(const BoxDesc&) const = default;
 };
-template <class V> void visit_params(BoxDesc& d, V& v) {
-  v(point("min", "Minimum corner"), d.min);
-  v(point("max", "Maximum corner"), d.max);
-}
+template <>
+struct ParamTable<BoxDesc> {
+  static constexpr auto rows = std::tuple{row(&BoxDesc::min, point("min", "Minimum corner")),
+                                          row(&BoxDesc::max, point("max", "Maximum corner"))};
+};
 
 struct MeshDesc {
   static constexpr std::string_view type_name = "mesh";
@@ -94,16 +108,21 @@ struct MeshDesc {
   float smooth_angle = 30.f;  // degrees; normals for a file without them (geometry/mesh_normals.h)
   bool operator==(const MeshDesc&) const = default;
 };
-template <class V> void visit_params(MeshDesc& d, V& v) {
-  v(required(path("path", "Wavefront OBJ file, relative to the scene file")).files(FileType::mesh).labelled("OBJ file"), d.path);
-  v(number("smooth_angle", 0, 180,
-           "For a file without normals: shading is smooth across edges whose faces meet at most this many "
-           "degrees apart and sharp at the others. 0 keeps the facets, 180 smooths everything; normals in "
-           "the file are used as given")
-        .slider(0, 180)
-        .labelled("Auto smooth angle"),
-    d.smooth_angle);
-}
+template <>
+struct ParamTable<MeshDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&MeshDesc::path, required(path("path", "Wavefront OBJ file, relative to the scene file"))
+                               .files(FileType::mesh)
+                               .labelled("OBJ file")),
+      row(&MeshDesc::smooth_angle,
+          number(
+              "smooth_angle", 0, 180,
+              "For a file without normals: shading is smooth across edges whose faces meet at most this many "
+              "degrees apart and sharp at the others. 0 keeps the facets, 180 smooths everything; normals in "
+              "the file are used as given")
+              .slider(0, 180)
+              .labelled("Auto smooth angle"))};
+};
 
 using ShapeVariant = std::variant<SphereDesc, QuadDesc, BoxDesc, MeshDesc>;
 
@@ -113,10 +132,14 @@ struct RotationDesc {
   float degrees = 0.f;  // right-handed about axis
   bool operator==(const RotationDesc&) const = default;
 };
-template <class V> void visit_params(RotationDesc& d, V& v) {
-  v(direction("axis", "Rotation axis"), d.axis);
-  v(number("degrees", -1e6, 1e6, "Right-handed angle about the axis").slider(-180, 180).labelled("Angle"), d.degrees);
-}
+template <>
+struct ParamTable<RotationDesc> {
+  static constexpr auto rows =
+      std::tuple{row(&RotationDesc::axis, direction("axis", "Rotation axis")),
+                 row(&RotationDesc::degrees, number("degrees", -1e6, 1e6, "Right-handed angle about the axis")
+                                                 .slider(-180, 180)
+                                                 .labelled("Angle"))};
+};
 
 struct TransformDesc {
   Vec3 scale{1.f};
@@ -134,12 +157,15 @@ struct ObjectDesc {
   LineOverrideDesc lines;
   bool operator==(const ObjectDesc&) const = default;
 };
-template <class V> void visit_params(ObjectDesc& d, V& v) {
-  v(text("name", "Unique object name"), d.name);
-  v(required(text("material", "Name of the object's material")).refers(Ref::material), d.material);
-  v(toggle("visible", "Hidden objects are not rendered"), d.visible);
-  v(group("lines", "Outline overrides for this object"), d.lines);
-}
+template <>
+struct ParamTable<ObjectDesc> {
+  static constexpr auto rows =
+      std::tuple{row(&ObjectDesc::name, text("name", "Unique object name")),
+                 row(&ObjectDesc::material,
+                     required(text("material", "Name of the object's material")).refers(Ref::material)),
+                 row(&ObjectDesc::visible, toggle("visible", "Hidden objects are not rendered")),
+                 row(&ObjectDesc::lines, group("lines", "Outline overrides for this object"))};
+};
 
 // ---------------------------------------------------------------- lights
 struct PointLightDesc {
@@ -149,11 +175,15 @@ struct PointLightDesc {
   float intensity = 1.f;  // radiant intensity scale (W/sr)
   bool operator==(const PointLightDesc&) const = default;
 };
-template <class V> void visit_params(PointLightDesc& d, V& v) {
-  v(point("position", "Position"), d.position);
-  v(color("color", 1e6, "Colour"), d.color);
-  v(number("intensity", 0, 1e9, "Radiant intensity: color * intensity per steradian").log_slider(0.1, 1e4), d.intensity);
-}
+template <>
+struct ParamTable<PointLightDesc> {
+  static constexpr auto rows =
+      std::tuple{row(&PointLightDesc::position, point("position", "Position")),
+                 row(&PointLightDesc::color, color("color", 1e6, "Colour")),
+                 row(&PointLightDesc::intensity,
+                     number("intensity", 0, 1e9, "Radiant intensity: color * intensity per steradian")
+                         .log_slider(0.1, 1e4))};
+};
 
 struct SpotLightDesc {
   static constexpr std::string_view type_name = "spot";
@@ -165,14 +195,19 @@ struct SpotLightDesc {
   float falloff_angle = 25.f;  // half-angle in degrees where falloff starts
   bool operator==(const SpotLightDesc&) const = default;
 };
-template <class V> void visit_params(SpotLightDesc& d, V& v) {
-  v(point("position", "Position"), d.position);
-  v(point("target", "Point the spot aims at"), d.target);
-  v(color("color", 1e6, "Colour"), d.color);
-  v(number("intensity", 0, 1e9, "Radiant intensity on the axis").log_slider(0.1, 1e4), d.intensity);
-  v(number("cone_angle", 0.01, 90, "Half-angle in degrees where the light ends").slider(1, 90), d.cone_angle);
-  v(number("falloff_angle", 0, 90, "Half-angle in degrees where the smooth falloff starts"), d.falloff_angle);
-}
+template <>
+struct ParamTable<SpotLightDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&SpotLightDesc::position, point("position", "Position")),
+      row(&SpotLightDesc::target, point("target", "Point the spot aims at")),
+      row(&SpotLightDesc::color, color("color", 1e6, "Colour")),
+      row(&SpotLightDesc::intensity,
+          number("intensity", 0, 1e9, "Radiant intensity on the axis").log_slider(0.1, 1e4)),
+      row(&SpotLightDesc::cone_angle,
+          number("cone_angle", 0.01, 90, "Half-angle in degrees where the light ends").slider(1, 90)),
+      row(&SpotLightDesc::falloff_angle,
+          number("falloff_angle", 0, 90, "Half-angle in degrees where the smooth falloff starts"))};
+};
 
 struct DirectionalLightDesc {
   static constexpr std::string_view type_name = "directional";
@@ -181,11 +216,14 @@ struct DirectionalLightDesc {
   float intensity = 1.f;  // irradiance on a surface facing the light
   bool operator==(const DirectionalLightDesc&) const = default;
 };
-template <class V> void visit_params(DirectionalLightDesc& d, V& v) {
-  v(direction("direction", "Direction the light travels"), d.direction);
-  v(color("color", 1e6, "Colour"), d.color);
-  v(number("intensity", 0, 1e9, "Irradiance on a surface facing the light").log_slider(0.01, 100), d.intensity);
-}
+template <>
+struct ParamTable<DirectionalLightDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&DirectionalLightDesc::direction, direction("direction", "Direction the light travels")),
+      row(&DirectionalLightDesc::color, color("color", 1e6, "Colour")),
+      row(&DirectionalLightDesc::intensity,
+          number("intensity", 0, 1e9, "Irradiance on a surface facing the light").log_slider(0.01, 100))};
+};
 
 using LightVariant = std::variant<PointLightDesc, SpotLightDesc, DirectionalLightDesc>;
 
@@ -201,9 +239,11 @@ struct ConstantEnvironmentDesc {
   Color color{0.f};
   bool operator==(const ConstantEnvironmentDesc&) const = default;
 };
-template <class V> void visit_params(ConstantEnvironmentDesc& d, V& v) {
-  v(color("color", 1e6, "Radiance arriving from every direction"), d.color);
-}
+template <>
+struct ParamTable<ConstantEnvironmentDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&ConstantEnvironmentDesc::color, color("color", 1e6, "Radiance arriving from every direction"))};
+};
 
 struct GradientEnvironmentDesc {
   static constexpr std::string_view type_name = "gradient";
@@ -212,11 +252,13 @@ struct GradientEnvironmentDesc {
   Color nadir{0.2f};
   bool operator==(const GradientEnvironmentDesc&) const = default;
 };
-template <class V> void visit_params(GradientEnvironmentDesc& d, V& v) {
-  v(color("zenith", 1e6, "Radiance straight up (+y)"), d.zenith);
-  v(color("horizon", 1e6, "Radiance at the horizon"), d.horizon);
-  v(color("nadir", 1e6, "Radiance straight down (-y)"), d.nadir);
-}
+template <>
+struct ParamTable<GradientEnvironmentDesc> {
+  static constexpr auto rows =
+      std::tuple{row(&GradientEnvironmentDesc::zenith, color("zenith", 1e6, "Radiance straight up (+y)")),
+                 row(&GradientEnvironmentDesc::horizon, color("horizon", 1e6, "Radiance at the horizon")),
+                 row(&GradientEnvironmentDesc::nadir, color("nadir", 1e6, "Radiance straight down (-y)"))};
+};
 
 using EnvironmentDesc = std::variant<ConstantEnvironmentDesc, GradientEnvironmentDesc>;
 
@@ -230,14 +272,21 @@ struct CameraDesc {
   float focus_distance = 0.f;  // 0 focuses on look_at
   bool operator==(const CameraDesc&) const = default;
 };
-template <class V> void visit_params(CameraDesc& d, V& v) {
-  v(point("look_from", "Eye position"), d.look_from);
-  v(point("look_at", "Point at the image centre"), d.look_at);
-  v(direction("up", "Up direction"), d.up);
-  v(number("vfov", 0.01, 179, "Vertical field of view in degrees").slider(5, 120).labelled("Field of view"), d.vfov);
-  v(number("aperture", 0, 1e6, "Lens diameter; 0 is a pinhole").log_slider(0.001, 10), d.aperture);
-  v(number("focus_distance", 0, 1e12, "Distance in focus; 0 focuses on look_at").log_slider(0.1, 1000), d.focus_distance);
-}
+template <>
+struct ParamTable<CameraDesc> {
+  static constexpr auto rows =
+      std::tuple{row(&CameraDesc::look_from, point("look_from", "Eye position")),
+                 row(&CameraDesc::look_at, point("look_at", "Point at the image centre")),
+                 row(&CameraDesc::up, direction("up", "Up direction")),
+                 row(&CameraDesc::vfov, number("vfov", 0.01, 179, "Vertical field of view in degrees")
+                                            .slider(5, 120)
+                                            .labelled("Field of view")),
+                 row(&CameraDesc::aperture,
+                     number("aperture", 0, 1e6, "Lens diameter; 0 is a pinhole").log_slider(0.001, 10)),
+                 row(&CameraDesc::focus_distance,
+                     number("focus_distance", 0, 1e12, "Distance in focus; 0 focuses on look_at")
+                         .log_slider(0.1, 1000))};
+};
 
 enum class PixelFilter { box, gaussian };
 inline constexpr std::array<std::string_view, 2> kPixelFilterNames = {"box", "gaussian"};
@@ -268,28 +317,64 @@ struct RenderSettings {
   bool motion_blur() const { return shutter_close > shutter_open; }
   bool operator==(const RenderSettings&) const = default;
 };
-template <class V> void visit_params(RenderSettings& d, V& v) {
-  v(at(Stage::film, integer("width", 1, 16384, "Image width in pixels").log_slider(64, 8192)), d.width);
-  v(at(Stage::film, integer("height", 1, 16384, "Image height in pixels").log_slider(64, 8192)), d.height);
-  v(at(Stage::limits, integer("spp", 1, 1 << 20, "Samples per pixel").log_slider(1, 16384)), d.spp);
-  v(at(Stage::limits, number("time_limit", 0, 1e7, "Stop after this many seconds; 0 means no limit").log_slider(1, 3600)), d.time_limit);
-  v(at(Stage::sampling, integer("max_depth", 1, 1024, "Maximum path length in bounces").slider(1, 64)), d.max_depth);
-  v(at(Stage::sampling, integer("seed", 0, 2147483647, "Seed of every random decision")), d.seed);
-  v(at(Stage::sampling, number("clamp", 0, 1e9, "Clamp sample luminance to this value; 0 is off").log_slider(1, 1e4).labelled("Clamp luminance")), d.clamp);
-  v(at(Stage::sampling, choice("filter", kPixelFilterNames, "Pixel reconstruction filter").labelled("Pixel filter")), d.filter);
-  v(at(Stage::sampling, number("filter_radius", 0.01, 8, "Filter radius in pixels").slider(0.25, 4)), d.filter_radius);
-  v(at(Stage::resolve, choice("painterly", kPainterlyFilterNames, "Painterly filter over the resolved image").labelled("Painterly filter")), d.painterly);
-  v(at(Stage::resolve, number("painterly_radius", 0.5, 64, "Painterly filter radius, pixels at 1080 lines").log_slider(0.5, 64)), d.painterly_radius);
-  v(at(Stage::resolve, number("painterly_sharpness", 0, 64, "Painterly filter sector sharpness").slider(0, 32)), d.painterly_sharpness);
-  v(at(Stage::layout, integer("frame_start", -1000000, 1000000, "First frame of the shot")), d.frame_start);
-  v(at(Stage::layout, integer("frame_end", -1000000, 1000000, "Last frame of the shot (included)")), d.frame_end);
-  v(at(Stage::layout, number("fps", 0.001, 1000, "Frames per second of playback").slider(1, 120).labelled("Frame rate")), d.fps);
-  // The frame itself redoes nothing: the compiler diffs the pictures at the two frames
-  // (document/animation.h), so a step that moves nothing keeps the samples.
-  v(at(Stage::layout, number("frame", -1000000, 1000000, "The current frame: what the document shows and a still renders").labelled("Current frame")), d.frame);
-  v(at(Stage::object, number("shutter_open", -1, 1, "Motion blur: the shutter opens this many frames from the frame's time").slider(-1, 0)), d.shutter_open);
-  v(at(Stage::object, number("shutter_close", -1, 1, "Motion blur: the shutter closes this many frames from the frame's time; equal to shutter_open is no blur").slider(0, 1)), d.shutter_close);
-}
+template <>
+struct ParamTable<RenderSettings> {
+  static constexpr auto rows = std::tuple{
+      row(&RenderSettings::width,
+          at(Stage::film, integer("width", 1, 16384, "Image width in pixels").log_slider(64, 8192))),
+      row(&RenderSettings::height,
+          at(Stage::film, integer("height", 1, 16384, "Image height in pixels").log_slider(64, 8192))),
+      row(&RenderSettings::spp,
+          at(Stage::limits, integer("spp", 1, 1 << 20, "Samples per pixel").log_slider(1, 16384))),
+      row(&RenderSettings::time_limit,
+          at(Stage::limits, number("time_limit", 0, 1e7, "Stop after this many seconds; 0 means no limit")
+                                .log_slider(1, 3600))),
+      row(&RenderSettings::max_depth,
+          at(Stage::sampling, integer("max_depth", 1, 1024, "Maximum path length in bounces").slider(1, 64))),
+      row(&RenderSettings::seed,
+          at(Stage::sampling, integer("seed", 0, 2147483647, "Seed of every random decision"))),
+      row(&RenderSettings::clamp,
+          at(Stage::sampling, number("clamp", 0, 1e9, "Clamp sample luminance to this value; 0 is off")
+                                  .log_slider(1, 1e4)
+                                  .labelled("Clamp luminance"))),
+      row(&RenderSettings::filter,
+          at(Stage::sampling,
+             choice("filter", kPixelFilterNames, "Pixel reconstruction filter").labelled("Pixel filter"))),
+      row(&RenderSettings::filter_radius,
+          at(Stage::sampling, number("filter_radius", 0.01, 8, "Filter radius in pixels").slider(0.25, 4))),
+      row(&RenderSettings::painterly, at(Stage::resolve, choice("painterly", kPainterlyFilterNames,
+                                                                "Painterly filter over the resolved image")
+                                                             .labelled("Painterly filter"))),
+      row(&RenderSettings::painterly_radius,
+          at(Stage::resolve,
+             number("painterly_radius", 0.5, 64, "Painterly filter radius, pixels at 1080 lines")
+                 .log_slider(0.5, 64))),
+      row(&RenderSettings::painterly_sharpness,
+          at(Stage::resolve,
+             number("painterly_sharpness", 0, 64, "Painterly filter sector sharpness").slider(0, 32))),
+      row(&RenderSettings::frame_start,
+          at(Stage::layout, integer("frame_start", -1000000, 1000000, "First frame of the shot"))),
+      row(&RenderSettings::frame_end,
+          at(Stage::layout, integer("frame_end", -1000000, 1000000, "Last frame of the shot (included)"))),
+      row(&RenderSettings::fps, at(Stage::layout, number("fps", 0.001, 1000, "Frames per second of playback")
+                                                      .slider(1, 120)
+                                                      .labelled("Frame rate"))),
+      // The frame itself redoes nothing: the compiler diffs the pictures at the two frames
+      // (document/animation.h), so a step that moves nothing keeps the samples.
+      row(&RenderSettings::frame,
+          at(Stage::layout, number("frame", -1000000, 1000000,
+                                   "The current frame: what the document shows and a still renders")
+                                .labelled("Current frame"))),
+      row(&RenderSettings::shutter_open,
+          at(Stage::object, number("shutter_open", -1, 1,
+                                   "Motion blur: the shutter opens this many frames from the frame's time")
+                                .slider(-1, 0))),
+      row(&RenderSettings::shutter_close,
+          at(Stage::object, number("shutter_close", -1, 1,
+                                   "Motion blur: the shutter closes this many frames from the frame's time; "
+                                   "equal to shutter_open is no blur")
+                                .slider(0, 1)))};
+};
 
 // ---------------------------------------------------------------- the document
 struct SceneDesc {

@@ -69,7 +69,7 @@ struct UnsetNames {
   std::vector<std::string>* out;
 
   template <class T>
-  void operator()(const Param& p, T& field) {
+  void operator()(const Param& p, const T& field) {
     const std::string here = child_path(at, p.name);
     if constexpr (std::is_same_v<T, std::string>) {
       if (p.required && p.kind == ParamKind::text && field.empty())
@@ -88,9 +88,9 @@ struct UnsetNames {
   }
 
   template <class Variant>
-  static void tagged(const std::string& at, Variant& value, std::vector<std::string>* out) {
+  static void tagged(const std::string& at, const Variant& value, std::vector<std::string>* out) {
     std::visit(
-        [&]<class A>(A& alternative) {
+        [&]<class A>(const A& alternative) {
           if constexpr (ParamGroup<A>) {
             UnsetNames inner{at, out};
             visit_params(alternative, inner);
@@ -107,16 +107,15 @@ std::vector<std::string> scene_problems(const SceneDesc& scene) {
   check_scene(scene, scene.base_dir, log);
   std::vector<std::string> problems = log.take();
   for (std::string& warning : log.take_warnings()) problems.push_back(std::move(warning));
-  SceneDesc copy = scene;  // visit_params takes mutable structs
-  for (size_t i = 0; i < copy.materials.size(); ++i)
-    UnsetNames::tagged(element_path("materials", i), copy.materials[i].data, &problems);
-  for (size_t i = 0; i < copy.objects.size(); ++i) {
+  for (size_t i = 0; i < scene.materials.size(); ++i)
+    UnsetNames::tagged(element_path("materials", i), scene.materials[i].data, &problems);
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
     UnsetNames names{element_path("objects", i), &problems};
-    visit_params(copy.objects[i], names);
+    visit_params(scene.objects[i], names);
   }
-  for (size_t i = 0; i < copy.strokes.size(); ++i) {
+  for (size_t i = 0; i < scene.strokes.size(); ++i) {
     UnsetNames names{element_path("strokes", i), &problems};
-    visit_params(copy.strokes[i], names);
+    visit_params(scene.strokes[i], names);
   }
   return problems;
 }

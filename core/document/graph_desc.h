@@ -27,23 +27,27 @@ struct GraphLinkDesc {
   std::string input;   // socket name on that node
   bool operator==(const GraphLinkDesc&) const = default;
 };
-template <class V> void visit_params(GraphLinkDesc& d, V& v) {
-  v(required(text("from", "Id of the node the link leaves")), d.from);
-  v(required(text("output", "Output socket it leaves from")), d.output);
-  v(required(text("to", "Id of the node the link enters")), d.to);
-  v(required(text("input", "Input socket it enters")), d.input);
-}
+template <>
+struct ParamTable<GraphLinkDesc> {
+  static constexpr auto rows =
+      std::tuple{row(&GraphLinkDesc::from, required(text("from", "Id of the node the link leaves"))),
+                 row(&GraphLinkDesc::output, required(text("output", "Output socket it leaves from"))),
+                 row(&GraphLinkDesc::to, required(text("to", "Id of the node the link enters"))),
+                 row(&GraphLinkDesc::input, required(text("input", "Input socket it enters")))};
+};
 
 struct NodePlacementDesc {
   std::string node;  // node id
   float x = 0.f, y = 0.f;
   bool operator==(const NodePlacementDesc&) const = default;
 };
-template <class V> void visit_params(NodePlacementDesc& d, V& v) {
-  v(required(text("node", "Node id")), d.node);
-  v(number("x", -1e7, 1e7, "Canvas x of the node's top-left corner"), d.x);
-  v(number("y", -1e7, 1e7, "Canvas y of the node's top-left corner"), d.y);
-}
+template <>
+struct ParamTable<NodePlacementDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&NodePlacementDesc::node, required(text("node", "Node id"))),
+      row(&NodePlacementDesc::x, number("x", -1e7, 1e7, "Canvas x of the node's top-left corner")),
+      row(&NodePlacementDesc::y, number("y", -1e7, 1e7, "Canvas y of the node's top-left corner"))};
+};
 
 // The canvas: where nodes sit and how it is viewed. Layout only.
 struct GraphEditorDesc {
@@ -52,12 +56,15 @@ struct GraphEditorDesc {
   float zoom = 1.f;
   bool operator==(const GraphEditorDesc&) const = default;
 };
-template <class V> void visit_params(GraphEditorDesc& d, V& v) {
-  v(at(Stage::layout, list("nodes", "Node positions on the canvas")), d.nodes);
-  v(at(Stage::layout, number("pan_x", -1e7, 1e7, "Canvas scroll, x")), d.pan_x);
-  v(at(Stage::layout, number("pan_y", -1e7, 1e7, "Canvas scroll, y")), d.pan_y);
-  v(at(Stage::layout, number("zoom", 0.1, 10, "Canvas zoom").log_slider(0.1, 10)), d.zoom);
-}
+template <>
+struct ParamTable<GraphEditorDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&GraphEditorDesc::nodes, at(Stage::layout, list("nodes", "Node positions on the canvas"))),
+      row(&GraphEditorDesc::pan_x, at(Stage::layout, number("pan_x", -1e7, 1e7, "Canvas scroll, x"))),
+      row(&GraphEditorDesc::pan_y, at(Stage::layout, number("pan_y", -1e7, 1e7, "Canvas scroll, y"))),
+      row(&GraphEditorDesc::zoom,
+          at(Stage::layout, number("zoom", 0.1, 10, "Canvas zoom").log_slider(0.1, 10)))};
+};
 
 struct GraphDesc {
   static constexpr std::string_view type_name = "graph";
@@ -68,11 +75,13 @@ struct GraphDesc {
 };
 inline constexpr Param kGraphNodes{"nodes", "The nodes: {\"id\": ..., \"type\": ..., inputs and settings}",
                                    ParamKind::nodes};
-template <class V> void visit_params(GraphDesc& d, V& v) {
-  v(kGraphNodes, d.nodes);
-  v(list("links", "Links from an output socket to an input socket"), d.links);
-  v(at(Stage::layout, group("editor", "Node positions and the canvas view")), d.editor);
-}
+template <>
+struct ParamTable<GraphDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&GraphDesc::nodes, kGraphNodes),
+      row(&GraphDesc::links, list("links", "Links from an output socket to an input socket")),
+      row(&GraphDesc::editor, at(Stage::layout, group("editor", "Node positions and the canvas view")))};
+};
 
 // ---------------------------------------------------------------- sockets
 struct SocketInfo {

@@ -63,7 +63,7 @@ bool reaches(const GraphDesc& g, std::string_view start, std::string_view target
 struct RowCounter {
   size_t* rows;
   template <class F>
-  void operator()(const Param&, F&) {
+  void operator()(const Param&, const F&) {
     ++*rows;
   }
 };
@@ -73,9 +73,8 @@ float estimated_height(const NodeVariant& node) {
   size_t rows = node_outputs(node).size();
   std::visit(
       [&]<class T>(const T& d) {
-        T copy = d;
         RowCounter counter{&rows};
-        visit_params(copy, counter);
+        visit_params(d, counter);
         if constexpr (graph_detail::HasLinkInputs<T>) rows += T::link_inputs.size();
       },
       node);

@@ -29,7 +29,10 @@ struct OutputNode {
   }};
   bool operator==(const OutputNode&) const = default;
 };
-template <class V> void visit_params(OutputNode&, V&) {}
+template <>
+struct ParamTable<OutputNode> {
+  static constexpr std::tuple<> rows{};
+};
 
 // ---------------------------------------------------------------- constants
 struct ValueNode {
@@ -39,7 +42,10 @@ struct ValueNode {
   float value = 0.5f;
   bool operator==(const ValueNode&) const = default;
 };
-template <class V> void visit_params(ValueNode& d, V& v) { v(number("value", -1e9, 1e9, "The number"), d.value); }
+template <>
+struct ParamTable<ValueNode> {
+  static constexpr auto rows = std::tuple{row(&ValueNode::value, number("value", -1e9, 1e9, "The number"))};
+};
 
 struct RgbNode {
   static constexpr std::string_view type_name = "rgb";
@@ -48,7 +54,10 @@ struct RgbNode {
   Color color{0.8f};
   bool operator==(const RgbNode&) const = default;
 };
-template <class V> void visit_params(RgbNode& d, V& v) { v(color("color", 1e6, "The colour"), d.color); }
+template <>
+struct ParamTable<RgbNode> {
+  static constexpr auto rows = std::tuple{row(&RgbNode::color, color("color", 1e6, "The colour"))};
+};
 
 // ---------------------------------------------------------------- textures
 struct ImageTextureNode {
@@ -62,10 +71,14 @@ struct ImageTextureNode {
   bool srgb = true;
   bool operator==(const ImageTextureNode&) const = default;
 };
-template <class V> void visit_params(ImageTextureNode& d, V& v) {
-  v(required(path("path", "Image file, relative to the scene file")).files(FileType::image).labelled("Image file"), d.path);
-  v(toggle("srgb", "Decode 8-bit texels from sRGB to linear"), d.srgb);
-}
+template <>
+struct ParamTable<ImageTextureNode> {
+  static constexpr auto rows =
+      std::tuple{row(&ImageTextureNode::path, required(path("path", "Image file, relative to the scene file"))
+                                                  .files(FileType::image)
+                                                  .labelled("Image file")),
+                 row(&ImageTextureNode::srgb, toggle("srgb", "Decode 8-bit texels from sRGB to linear"))};
+};
 
 struct CheckerNode {
   static constexpr std::string_view type_name = "checker_texture";
@@ -79,11 +92,13 @@ struct CheckerNode {
   float scale = 10.f;
   bool operator==(const CheckerNode&) const = default;
 };
-template <class V> void visit_params(CheckerNode& d, V& v) {
-  v(color("color1", 1e6, "Colour of even squares"), d.color1);
-  v(color("color2", 1e6, "Colour of odd squares"), d.color2);
-  v(number("scale", 0, 1e6, "Squares per unit").log_slider(0.1, 1000), d.scale);
-}
+template <>
+struct ParamTable<CheckerNode> {
+  static constexpr auto rows =
+      std::tuple{row(&CheckerNode::color1, color("color1", 1e6, "Colour of even squares")),
+                 row(&CheckerNode::color2, color("color2", 1e6, "Colour of odd squares")),
+                 row(&CheckerNode::scale, number("scale", 0, 1e6, "Squares per unit").log_slider(0.1, 1000))};
+};
 
 enum class NoiseType { value, gradient };
 inline constexpr std::array<std::string_view, 2> kNoiseTypeNames = {"value", "gradient"};
@@ -102,13 +117,16 @@ struct NoiseNode {
   float distortion = 0.f;
   bool operator==(const NoiseNode&) const = default;
 };
-template <class V> void visit_params(NoiseNode& d, V& v) {
-  v(choice("noise", kNoiseTypeNames, "Value noise or gradient (Perlin) noise"), d.noise);
-  v(integer("octaves", 1, 16, "Octaves of fractal detail"), d.octaves);
-  v(number("scale", 0, 1e6, "Features per unit").log_slider(0.1, 100), d.scale);
-  v(number("roughness", 0, 1, "Amplitude of each octave relative to the last"), d.roughness);
-  v(number("distortion", 0, 1e3, "Warps the lookup by another noise").slider(0, 10), d.distortion);
-}
+template <>
+struct ParamTable<NoiseNode> {
+  static constexpr auto rows = std::tuple{
+      row(&NoiseNode::noise, choice("noise", kNoiseTypeNames, "Value noise or gradient (Perlin) noise")),
+      row(&NoiseNode::octaves, integer("octaves", 1, 16, "Octaves of fractal detail")),
+      row(&NoiseNode::scale, number("scale", 0, 1e6, "Features per unit").log_slider(0.1, 100)),
+      row(&NoiseNode::roughness, number("roughness", 0, 1, "Amplitude of each octave relative to the last")),
+      row(&NoiseNode::distortion,
+          number("distortion", 0, 1e3, "Warps the lookup by another noise").slider(0, 10))};
+};
 
 struct VoronoiNode {
   static constexpr std::string_view type_name = "voronoi_texture";
@@ -122,10 +140,13 @@ struct VoronoiNode {
   float randomness = 1.f;
   bool operator==(const VoronoiNode&) const = default;
 };
-template <class V> void visit_params(VoronoiNode& d, V& v) {
-  v(number("scale", 0, 1e6, "Cells per unit").log_slider(0.1, 100), d.scale);
-  v(number("randomness", 0, 1, "How far cell points stray from a regular grid"), d.randomness);
-}
+template <>
+struct ParamTable<VoronoiNode> {
+  static constexpr auto rows =
+      std::tuple{row(&VoronoiNode::scale, number("scale", 0, 1e6, "Cells per unit").log_slider(0.1, 100)),
+                 row(&VoronoiNode::randomness,
+                     number("randomness", 0, 1, "How far cell points stray from a regular grid"))};
+};
 
 // ---------------------------------------------------------------- converters
 enum class RampMode { constant, linear, ease };
@@ -136,10 +157,12 @@ struct RampStopDesc {
   Color color{0.f};
   bool operator==(const RampStopDesc&) const = default;
 };
-template <class V> void visit_params(RampStopDesc& d, V& v) {
-  v(number("position", 0, 1, "Where the stop sits on the ramp"), d.position);
-  v(color("color", 1e6, "Colour at the stop"), d.color);
-}
+template <>
+struct ParamTable<RampStopDesc> {
+  static constexpr auto rows =
+      std::tuple{row(&RampStopDesc::position, number("position", 0, 1, "Where the stop sits on the ramp")),
+                 row(&RampStopDesc::color, color("color", 1e6, "Colour at the stop"))};
+};
 
 struct ColorRampNode {
   static constexpr std::string_view type_name = "color_ramp";
@@ -150,11 +173,15 @@ struct ColorRampNode {
   std::vector<RampStopDesc> stops = {{0.f, Color(0.f)}, {1.f, Color(1.f)}};
   bool operator==(const ColorRampNode&) const = default;
 };
-template <class V> void visit_params(ColorRampNode& d, V& v) {
-  v(number("fac", -1e9, 1e9, "Position on the ramp, clamped to [0, 1]").slider(0, 1), d.fac);
-  v(choice("interpolation", kRampModeNames, "How colours between stops are blended"), d.interpolation);
-  v(list("stops", "Stops: {\"position\": p, \"color\": c}, in any order"), d.stops);
-}
+template <>
+struct ParamTable<ColorRampNode> {
+  static constexpr auto rows = std::tuple{
+      row(&ColorRampNode::fac,
+          number("fac", -1e9, 1e9, "Position on the ramp, clamped to [0, 1]").slider(0, 1)),
+      row(&ColorRampNode::interpolation,
+          choice("interpolation", kRampModeNames, "How colours between stops are blended")),
+      row(&ColorRampNode::stops, list("stops", "Stops: {\"position\": p, \"color\": c}, in any order"))};
+};
 
 enum class MathOp { add, subtract, multiply, divide, power, minimum, maximum, clamp, smoothstep, greater_than, less_than };
 inline constexpr std::array<std::string_view, 11> kMathOpNames = {
@@ -172,13 +199,16 @@ struct MathNode {
   float a = 0.5f, b = 0.5f, c = 1.f;
   bool operator==(const MathNode&) const = default;
 };
-template <class V> void visit_params(MathNode& d, V& v) {
-  v(choice("operation", kMathOpNames, "What to compute"), d.operation);
-  v(toggle("clamp_result", "Clamp the result to [0, 1]"), d.clamp_result);
-  v(number("a", -1e9, 1e9, "First operand"), d.a);
-  v(number("b", -1e9, 1e9, "Second operand (the lower bound or edge for clamp and smoothstep)"), d.b);
-  v(number("c", -1e9, 1e9, "Upper bound or edge for clamp and smoothstep"), d.c);
-}
+template <>
+struct ParamTable<MathNode> {
+  static constexpr auto rows = std::tuple{
+      row(&MathNode::operation, choice("operation", kMathOpNames, "What to compute")),
+      row(&MathNode::clamp_result, toggle("clamp_result", "Clamp the result to [0, 1]")),
+      row(&MathNode::a, number("a", -1e9, 1e9, "First operand")),
+      row(&MathNode::b,
+          number("b", -1e9, 1e9, "Second operand (the lower bound or edge for clamp and smoothstep)")),
+      row(&MathNode::c, number("c", -1e9, 1e9, "Upper bound or edge for clamp and smoothstep"))};
+};
 
 // Linear remap of value from [from_min, from_max] to [to_min, to_max].
 struct MapRangeNode {
@@ -189,14 +219,16 @@ struct MapRangeNode {
   float value = 0.5f, from_min = 0.f, from_max = 1.f, to_min = 0.f, to_max = 1.f;
   bool operator==(const MapRangeNode&) const = default;
 };
-template <class V> void visit_params(MapRangeNode& d, V& v) {
-  v(toggle("clamp_result", "Keep the result within [to_min, to_max]"), d.clamp_result);
-  v(number("value", -1e9, 1e9, "The value to remap"), d.value);
-  v(number("from_min", -1e9, 1e9, "Maps to to_min"), d.from_min);
-  v(number("from_max", -1e9, 1e9, "Maps to to_max"), d.from_max);
-  v(number("to_min", -1e9, 1e9, "Lower end of the output range"), d.to_min);
-  v(number("to_max", -1e9, 1e9, "Upper end of the output range"), d.to_max);
-}
+template <>
+struct ParamTable<MapRangeNode> {
+  static constexpr auto rows = std::tuple{
+      row(&MapRangeNode::clamp_result, toggle("clamp_result", "Keep the result within [to_min, to_max]")),
+      row(&MapRangeNode::value, number("value", -1e9, 1e9, "The value to remap")),
+      row(&MapRangeNode::from_min, number("from_min", -1e9, 1e9, "Maps to to_min")),
+      row(&MapRangeNode::from_max, number("from_max", -1e9, 1e9, "Maps to to_max")),
+      row(&MapRangeNode::to_min, number("to_min", -1e9, 1e9, "Lower end of the output range")),
+      row(&MapRangeNode::to_max, number("to_max", -1e9, 1e9, "Upper end of the output range"))};
+};
 
 enum class BlendOp { mix, multiply, screen, overlay, add };
 inline constexpr std::array<std::string_view, 5> kBlendOpNames = {"mix", "multiply", "screen", "overlay", "add"};
@@ -212,13 +244,15 @@ struct MixColorNode {
   Color b{0.5f};
   bool operator==(const MixColorNode&) const = default;
 };
-template <class V> void visit_params(MixColorNode& d, V& v) {
-  v(choice("blend", kBlendOpNames, "How b is laid over a"), d.blend);
-  v(toggle("clamp_result", "Clamp the result to [0, 1]"), d.clamp_result);
-  v(number("fac", 0, 1, "Strength of b"), d.fac);
-  v(color("a", 1e6, "Bottom colour"), d.a);
-  v(color("b", 1e6, "Top colour"), d.b);
-}
+template <>
+struct ParamTable<MixColorNode> {
+  static constexpr auto rows =
+      std::tuple{row(&MixColorNode::blend, choice("blend", kBlendOpNames, "How b is laid over a")),
+                 row(&MixColorNode::clamp_result, toggle("clamp_result", "Clamp the result to [0, 1]")),
+                 row(&MixColorNode::fac, number("fac", 0, 1, "Strength of b")),
+                 row(&MixColorNode::a, color("a", 1e6, "Bottom colour")),
+                 row(&MixColorNode::b, color("b", 1e6, "Top colour"))};
+};
 
 enum class VectorOp { add, subtract, multiply, dot, cross, normalize, length, scale };
 inline constexpr std::array<std::string_view, 8> kVectorOpNames = {"add",       "subtract", "multiply", "dot",
@@ -235,12 +269,14 @@ struct VectorMathNode {
   float scale = 1.f;
   bool operator==(const VectorMathNode&) const = default;
 };
-template <class V> void visit_params(VectorMathNode& d, V& v) {
-  v(choice("operation", kVectorOpNames, "What to compute"), d.operation);
-  v(vector("a", "First operand"), d.a);
-  v(vector("b", "Second operand"), d.b);
-  v(number("scale", -1e9, 1e9, "Factor for scale"), d.scale);
-}
+template <>
+struct ParamTable<VectorMathNode> {
+  static constexpr auto rows =
+      std::tuple{row(&VectorMathNode::operation, choice("operation", kVectorOpNames, "What to compute")),
+                 row(&VectorMathNode::a, vector("a", "First operand")),
+                 row(&VectorMathNode::b, vector("b", "Second operand")),
+                 row(&VectorMathNode::scale, number("scale", -1e9, 1e9, "Factor for scale"))};
+};
 
 struct HsvNode {
   static constexpr std::string_view type_name = "hue_saturation";
@@ -250,13 +286,15 @@ struct HsvNode {
   Color color{0.8f};
   bool operator==(const HsvNode&) const = default;
 };
-template <class V> void visit_params(HsvNode& d, V& v) {
-  v(number("hue", 0, 1, "Hue shift; 0.5 keeps the hue"), d.hue);
-  v(number("saturation", 0, 1e3, "Multiplies saturation").slider(0, 2), d.saturation);
-  v(number("value", 0, 1e3, "Multiplies value").slider(0, 2), d.value);
-  v(number("fac", 0, 1, "Blend of the adjusted colour over the input"), d.fac);
-  v(color("color", 1e6, "The colour to adjust"), d.color);
-}
+template <>
+struct ParamTable<HsvNode> {
+  static constexpr auto rows = std::tuple{
+      row(&HsvNode::hue, number("hue", 0, 1, "Hue shift; 0.5 keeps the hue")),
+      row(&HsvNode::saturation, number("saturation", 0, 1e3, "Multiplies saturation").slider(0, 2)),
+      row(&HsvNode::value, number("value", 0, 1e3, "Multiplies value").slider(0, 2)),
+      row(&HsvNode::fac, number("fac", 0, 1, "Blend of the adjusted colour over the input")),
+      row(&HsvNode::color, color("color", 1e6, "The colour to adjust"))};
+};
 
 enum class ColorConversion { rgb_to_hsv, hsv_to_rgb };
 inline constexpr std::array<std::string_view, 2> kColorConversionNames = {"rgb_to_hsv", "hsv_to_rgb"};
@@ -269,10 +307,13 @@ struct ConvertColorNode {
   Color color{0.8f};
   bool operator==(const ConvertColorNode&) const = default;
 };
-template <class V> void visit_params(ConvertColorNode& d, V& v) {
-  v(choice("conversion", kColorConversionNames, "Direction of the conversion"), d.conversion);
-  v(color("color", 1e6, "RGB, or (h, s, v) in [0, 1]"), d.color);
-}
+template <>
+struct ParamTable<ConvertColorNode> {
+  static constexpr auto rows =
+      std::tuple{row(&ConvertColorNode::conversion,
+                     choice("conversion", kColorConversionNames, "Direction of the conversion")),
+                 row(&ConvertColorNode::color, color("color", 1e6, "RGB, or (h, s, v) in [0, 1]"))};
+};
 
 struct SeparateNode {
   static constexpr std::string_view type_name = "separate";
@@ -283,7 +324,10 @@ struct SeparateNode {
   Vec3 vector{0.f};
   bool operator==(const SeparateNode&) const = default;
 };
-template <class V> void visit_params(SeparateNode& d, V& v) { v(vector("vector", "A vector or colour"), d.vector); }
+template <>
+struct ParamTable<SeparateNode> {
+  static constexpr auto rows = std::tuple{row(&SeparateNode::vector, vector("vector", "A vector or colour"))};
+};
 
 struct CombineNode {
   static constexpr std::string_view type_name = "combine";
@@ -293,11 +337,13 @@ struct CombineNode {
   float x = 0.f, y = 0.f, z = 0.f;
   bool operator==(const CombineNode&) const = default;
 };
-template <class V> void visit_params(CombineNode& d, V& v) {
-  v(number("x", -1e9, 1e9, "First component (red)"), d.x);
-  v(number("y", -1e9, 1e9, "Second component (green)"), d.y);
-  v(number("z", -1e9, 1e9, "Third component (blue)"), d.z);
-}
+template <>
+struct ParamTable<CombineNode> {
+  static constexpr auto rows =
+      std::tuple{row(&CombineNode::x, number("x", -1e9, 1e9, "First component (red)")),
+                 row(&CombineNode::y, number("y", -1e9, 1e9, "Second component (green)")),
+                 row(&CombineNode::z, number("z", -1e9, 1e9, "Third component (blue)"))};
+};
 
 // ---------------------------------------------------------------- the hit
 struct GeometryNode {
@@ -318,7 +364,10 @@ struct GeometryNode {
   }};
   bool operator==(const GeometryNode&) const = default;
 };
-template <class V> void visit_params(GeometryNode&, V&) {}
+template <>
+struct ParamTable<GeometryNode> {
+  static constexpr std::tuple<> rows{};
+};
 
 // Toon work: the light a cel shader quantises, traced only when a graph uses it.
 struct LightInputNode {
@@ -331,7 +380,10 @@ struct LightInputNode {
   }};
   bool operator==(const LightInputNode&) const = default;
 };
-template <class V> void visit_params(LightInputNode&, V&) {}
+template <>
+struct ParamTable<LightInputNode> {
+  static constexpr std::tuple<> rows{};
+};
 
 struct FresnelNode {
   static constexpr std::string_view type_name = "fresnel";
@@ -340,9 +392,11 @@ struct FresnelNode {
   float ior = 1.45f;
   bool operator==(const FresnelNode&) const = default;
 };
-template <class V> void visit_params(FresnelNode& d, V& v) {
-  v(number("ior", 1, 10, "Index of refraction").slider(1, 3), d.ior);
-}
+template <>
+struct ParamTable<FresnelNode> {
+  static constexpr auto rows =
+      std::tuple{row(&FresnelNode::ior, number("ior", 1, 10, "Index of refraction").slider(1, 3))};
+};
 
 struct LayerWeightNode {
   static constexpr std::string_view type_name = "layer_weight";
@@ -352,9 +406,11 @@ struct LayerWeightNode {
   float blend = 0.5f;
   bool operator==(const LayerWeightNode&) const = default;
 };
-template <class V> void visit_params(LayerWeightNode& d, V& v) {
-  v(number("blend", 0, 1, "Where the rim rises"), d.blend);
-}
+template <>
+struct ParamTable<LayerWeightNode> {
+  static constexpr auto rows =
+      std::tuple{row(&LayerWeightNode::blend, number("blend", 0, 1, "Where the rim rises"))};
+};
 
 // ---------------------------------------------------------------- closures
 // Picks a or b per sample with probability fac of b: the blend costs no more than either.
@@ -367,7 +423,10 @@ struct MixClosureNode {
   float fac = 0.5f;
   bool operator==(const MixClosureNode&) const = default;
 };
-template <class V> void visit_params(MixClosureNode& d, V& v) { v(number("fac", 0, 1, "Weight of b"), d.fac); }
+template <>
+struct ParamTable<MixClosureNode> {
+  static constexpr auto rows = std::tuple{row(&MixClosureNode::fac, number("fac", 0, 1, "Weight of b"))};
+};
 
 // The sum of two surfaces (a rim emission over a toon base): one is picked per sample and weighted by 2.
 struct AddClosureNode {
@@ -378,7 +437,10 @@ struct AddClosureNode {
                                                               {"b", SocketType::closure, "The other"}}};
   bool operator==(const AddClosureNode&) const = default;
 };
-template <class V> void visit_params(AddClosureNode&, V&) {}
+template <>
+struct ParamTable<AddClosureNode> {
+  static constexpr std::tuple<> rows{};
+};
 
 using NodeVariant =
     std::variant<OutputNode, ValueNode, RgbNode, ImageTextureNode, CheckerNode, NoiseNode, VoronoiNode, ColorRampNode,

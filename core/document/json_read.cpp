@@ -1,4 +1,4 @@
-// The generic scene reader: one visitor over visit_params reads and checks every
+// The generic scene reader: one visitor over the parameter tables reads and checks every
 // field of every struct, so its messages come from the same Param list as the editor's
 // widgets. Checks that span the document (names, references, files) are in scene_checks.
 #include "core/document/json_read.h"
@@ -27,7 +27,7 @@ using Json = nlohmann::json;
 using KeyList = std::vector<std::string_view>;
 
 // Parameters that belong to the document's structure rather than to a struct's
-// visit_params: names of list entries and the object transform.
+// parameter table: names of list entries and the object transform.
 constexpr Param kMaterialName = required(text("name", "Unique material name"));
 constexpr Param kLightName = text("name", "Unique light name");
 constexpr Param kMaterialLines = group("lines", "Outline overrides for surfaces of this material");
@@ -234,7 +234,7 @@ bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string&
                 std::vector<GraphNodeDesc>& out);
 
 // ---------------------------------------------------------------- structs and variants
-// The visitor handed to visit_params: reads the key a Param names, if present, and
+// The visitor a struct's parameter table is walked with: reads the key a Param names, if present, and
 // records the name so unknown keys can be reported afterwards.
 struct ParamReader {
   ErrorLog& log;

@@ -1,4 +1,4 @@
-// Reads a parsed scene document into a SceneDesc through the visit_params lists,
+// Reads a parsed scene document into a SceneDesc through the parameter tables,
 // checking every value against its Param and the references between sections.
 // Every problem goes to the log; none stops the reading.
 #pragma once

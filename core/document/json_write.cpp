@@ -1,4 +1,4 @@
-// The generic scene writer: a visitor over visit_params turns each field into JSON
+// The generic scene writer: a walk over the parameter tables turns each field into JSON
 // by its C++ type (and, for choices, its Param's name table).
 #include "core/document/json_write.h"
 
@@ -53,7 +53,7 @@ Json value_json(const Param&, const std::vector<Color>& colors) {
 }
 
 template <class Desc>
-void write_params(Json& object, Desc desc);
+void write_params(Json& object, const Desc& desc);
 template <class Variant>
 void write_tagged(Json& object, const Variant& value);
 
@@ -102,9 +102,8 @@ struct ParamWriter {
   }
 };
 
-// visit_params takes a mutable struct (the reader fills it); the writer gets a copy.
 template <class Desc>
-void write_params(Json& object, Desc desc) {
+void write_params(Json& object, const Desc& desc) {
   ParamWriter writer{object};
   visit_params(desc, writer);
 }

@@ -1,4 +1,4 @@
-// Writes a SceneDesc as JSON through the same visit_params lists the reader uses:
+// Writes a SceneDesc as JSON through the same parameter tables the reader uses:
 // every field, defaults included, in declaration order, so files are explicit; only
 // unset optional names and paths are left out (the reader takes absent as unset).
 #pragma once
@@ -12,7 +12,7 @@
 namespace inkray {
 
 // Ordered so files read top-down: format, version, camera, render, environment,
-// materials, objects, lights; within a struct, its visit_params order.
+// materials, objects, lights; within a struct, its parameter table's order.
 nlohmann::ordered_json write_scene_document(const SceneDesc& scene);
 
 // Pretty-prints with a 2-space indent, keeping arrays of plain values on one line

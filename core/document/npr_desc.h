@@ -24,13 +24,22 @@ struct LineStyleDesc {
   float threshold = 0.f;  // crease: angle in degrees; depth: relative jump; unused otherwise
   bool operator==(const LineStyleDesc&) const = default;
 };
-template <class V> void visit_params(LineStyleDesc& d, V& v) {
-  v(at(Stage::sampling, toggle("enabled", "Draw this line type")), d.enabled);
-  v(at(Stage::resolve, color("color", 1e3, "Line colour (applied when the image is resolved: no re-render)")), d.color);
-  v(at(Stage::sampling, number("width", 0, 100, "Multiplies the outline width").log_slider(0.1, 10).labelled("Width scale")), d.width);
-  v(at(Stage::resolve, number("opacity", 0, 1, "Line opacity")), d.opacity);
-  v(at(Stage::sampling, number("threshold", 0, 1e6, "Crease: angle in degrees; depth: relative distance jump").log_slider(0.01, 180)), d.threshold);
-}
+template <>
+struct ParamTable<LineStyleDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&LineStyleDesc::enabled, at(Stage::sampling, toggle("enabled", "Draw this line type"))),
+      row(&LineStyleDesc::color,
+          at(Stage::resolve,
+             color("color", 1e3, "Line colour (applied when the image is resolved: no re-render)"))),
+      row(&LineStyleDesc::width, at(Stage::sampling, number("width", 0, 100, "Multiplies the outline width")
+                                                         .log_slider(0.1, 10)
+                                                         .labelled("Width scale"))),
+      row(&LineStyleDesc::opacity, at(Stage::resolve, number("opacity", 0, 1, "Line opacity"))),
+      row(&LineStyleDesc::threshold,
+          at(Stage::sampling,
+             number("threshold", 0, 1e6, "Crease: angle in degrees; depth: relative distance jump")
+                 .log_slider(0.01, 180)))};
+};
 
 struct OutlineDesc {
   int quality = 1;  // stencil rays per camera sample
@@ -55,27 +64,54 @@ struct OutlineDesc {
   }
   bool operator==(const OutlineDesc&) const = default;
 };
-template <class V> void visit_params(OutlineDesc& d, V& v) {
-  v(at(Stage::sampling, toggle("enabled", "Draw outlines")), d.enabled);
-  v(at(Stage::sampling, integer("quality", 1, 16, "Stencil rays per camera sample: more give clean lines in fewer samples").labelled("Line quality")), d.quality);
-  v(at(Stage::sampling, toggle("adaptive", "Trace stencil rays only where a pixel's lines are still uncertain; the converged lines are the same").labelled("Adaptive line sampling")), d.adaptive);
-  v(at(Stage::sampling, number("width", 0, 1000, "Line width in `unit`; below one pixel a line fades instead of thinning, 0 draws none").log_slider(0.1, 20).labelled("Line width")), d.width);
-  v(at(Stage::sampling, choice("unit", kLineWidthUnitNames,
-                               "pixels (at reference_height), percent of image height, or world units")),
-    d.unit);
-  v(at(Stage::sampling, number("reference_height", 1, 1e5, "Image height that `pixels` refer to").log_slider(240, 4320)), d.reference_height);
-  v(at(Stage::sampling, number("distance_falloff", 0, 4,
-                               "Width shrinks as (falloff_start / distance)^falloff beyond falloff_start")),
-    d.distance_falloff);
-  v(at(Stage::sampling, number("falloff_start", 0, 1e9, "Distance where the falloff begins").log_slider(0.1, 1000)), d.falloff_start);
-  v(at(Stage::sampling, toggle("in_reflections", "Lines appear in mirrors and through glass").labelled("Show in reflections")), d.in_reflections);
-  v(group("silhouette", "Where a surface meets the background or a surface behind it"), d.silhouette);
-  v(group("object", "Where one object meets another"), d.object);
-  v(group("material", "Where materials change"), d.material);
-  v(group("crease", "Where the normal bends by more than `threshold` degrees; on meshes, along feature edges sharper than that"), d.crease);
-  v(group("depth", "Where one surface occludes another more than `threshold` (relative) further away"), d.depth);
-  v(group("intersection", "Where two objects cross"), d.intersection);
-}
+template <>
+struct ParamTable<OutlineDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&OutlineDesc::enabled, at(Stage::sampling, toggle("enabled", "Draw outlines"))),
+      row(&OutlineDesc::quality,
+          at(Stage::sampling,
+             integer("quality", 1, 16,
+                     "Stencil rays per camera sample: more give clean lines in fewer samples")
+                 .labelled("Line quality"))),
+      row(&OutlineDesc::adaptive,
+          at(Stage::sampling, toggle("adaptive",
+                                     "Trace stencil rays only where a pixel's lines are still uncertain; the "
+                                     "converged lines are the same")
+                                  .labelled("Adaptive line sampling"))),
+      row(&OutlineDesc::width,
+          at(Stage::sampling,
+             number("width", 0, 1000,
+                    "Line width in `unit`; below one pixel a line fades instead of thinning, 0 draws none")
+                 .log_slider(0.1, 20)
+                 .labelled("Line width"))),
+      row(&OutlineDesc::unit,
+          at(Stage::sampling,
+             choice("unit", kLineWidthUnitNames,
+                    "pixels (at reference_height), percent of image height, or world units"))),
+      row(&OutlineDesc::reference_height,
+          at(Stage::sampling, number("reference_height", 1, 1e5, "Image height that `pixels` refer to")
+                                  .log_slider(240, 4320))),
+      row(&OutlineDesc::distance_falloff,
+          at(Stage::sampling,
+             number("distance_falloff", 0, 4,
+                    "Width shrinks as (falloff_start / distance)^falloff beyond falloff_start"))),
+      row(&OutlineDesc::falloff_start,
+          at(Stage::sampling,
+             number("falloff_start", 0, 1e9, "Distance where the falloff begins").log_slider(0.1, 1000))),
+      row(&OutlineDesc::in_reflections,
+          at(Stage::sampling, toggle("in_reflections", "Lines appear in mirrors and through glass")
+                                  .labelled("Show in reflections"))),
+      row(&OutlineDesc::silhouette,
+          group("silhouette", "Where a surface meets the background or a surface behind it")),
+      row(&OutlineDesc::object, group("object", "Where one object meets another")),
+      row(&OutlineDesc::material, group("material", "Where materials change")),
+      row(&OutlineDesc::crease, group("crease",
+                                      "Where the normal bends by more than `threshold` degrees; on meshes, "
+                                      "along feature edges sharper than that")),
+      row(&OutlineDesc::depth,
+          group("depth", "Where one surface occludes another more than `threshold` (relative) further away")),
+      row(&OutlineDesc::intersection, group("intersection", "Where two objects cross"))};
+};
 
 // ---------------------------------------------------------------- painterly strokes
 enum class BrushKind { bristle, flat, image };
@@ -102,28 +138,53 @@ struct StrokeEmitterDesc {
   bool indirect = false;    // light bouncing off diffuse and glossy surfaces sees the strokes
   bool operator==(const StrokeEmitterDesc&) const = default;
 };
-template <class V> void visit_params(StrokeEmitterDesc& d, V& v) {
-  v(text("name", "Unique emitter name"), d.name);
-  v(required(text("object", "Object the strokes grow on")).refers(Ref::object), d.object);
-  v(integer("seed", 0, 2147483647, "Placement seed: the same seed gives the same strokes"), d.seed);
-  v(integer("count", 0, 10000000, "Number of strokes").log_slider(10, 1e6), d.count);
-  v(number("width_min", 0, 1e6, "Smallest stroke width, world units").log_slider(0.001, 1).labelled("Smallest width"), d.width_min);
-  v(number("width_max", 0, 1e6, "Largest stroke width, world units").log_slider(0.001, 1).labelled("Largest width"), d.width_max);
-  v(number("length_min", 0, 1e6, "Shortest stroke length, world units").log_slider(0.01, 10).labelled("Shortest length"), d.length_min);
-  v(number("length_max", 0, 1e6, "Longest stroke length, world units").log_slider(0.01, 10).labelled("Longest length"), d.length_max);
-  v(direction("flow", "Flow direction, projected on the surface"), d.flow);
-  v(number("rotation_jitter", 0, 180, "Random rotation about the normal, degrees"), d.rotation_jitter);
-  v(number("hue_jitter", 0, 180, "Random hue shift, degrees"), d.hue_jitter);
-  v(number("saturation_jitter", 0, 1, "Random saturation change"), d.saturation_jitter);
-  v(number("value_jitter", 0, 1, "Random value change"), d.value_jitter);
-  v(choice("brush", kBrushKindNames, "Brush: procedural bristle or flat, or an image"), d.brush);
-  v(path("brush_image", "Brush image (PNG with alpha), for brush \"image\"").files(FileType::brush), d.brush_image);
-  v(number("bristles", 1, 256, "Bristle count across a procedural stroke").log_slider(1, 64), d.bristles);
-  v(number("pressure", 0, 1, "Alpha falloff along the stroke"), d.pressure);
-  v(integer("segments", 1, 64, "Most ribbon segments along each stroke; fewer where the surface is flat"), d.segments);
-  v(number("offset", 0, 1e6, "Lift above the surface; 0 picks one from the object's size").log_slider(0.001, 1).labelled("Lift"), d.offset);
-  v(toggle("indirect", "Light bouncing off diffuse and glossy surfaces sees the strokes; off, it sees the object under them (faster)").labelled("In bounce light"), d.indirect);
-}
+template <>
+struct ParamTable<StrokeEmitterDesc> {
+  static constexpr auto rows = std::tuple{
+      row(&StrokeEmitterDesc::name, text("name", "Unique emitter name")),
+      row(&StrokeEmitterDesc::object,
+          required(text("object", "Object the strokes grow on")).refers(Ref::object)),
+      row(&StrokeEmitterDesc::seed,
+          integer("seed", 0, 2147483647, "Placement seed: the same seed gives the same strokes")),
+      row(&StrokeEmitterDesc::count, integer("count", 0, 10000000, "Number of strokes").log_slider(10, 1e6)),
+      row(&StrokeEmitterDesc::width_min, number("width_min", 0, 1e6, "Smallest stroke width, world units")
+                                             .log_slider(0.001, 1)
+                                             .labelled("Smallest width")),
+      row(&StrokeEmitterDesc::width_max, number("width_max", 0, 1e6, "Largest stroke width, world units")
+                                             .log_slider(0.001, 1)
+                                             .labelled("Largest width")),
+      row(&StrokeEmitterDesc::length_min, number("length_min", 0, 1e6, "Shortest stroke length, world units")
+                                              .log_slider(0.01, 10)
+                                              .labelled("Shortest length")),
+      row(&StrokeEmitterDesc::length_max, number("length_max", 0, 1e6, "Longest stroke length, world units")
+                                              .log_slider(0.01, 10)
+                                              .labelled("Longest length")),
+      row(&StrokeEmitterDesc::flow, direction("flow", "Flow direction, projected on the surface")),
+      row(&StrokeEmitterDesc::rotation_jitter,
+          number("rotation_jitter", 0, 180, "Random rotation about the normal, degrees")),
+      row(&StrokeEmitterDesc::hue_jitter, number("hue_jitter", 0, 180, "Random hue shift, degrees")),
+      row(&StrokeEmitterDesc::saturation_jitter,
+          number("saturation_jitter", 0, 1, "Random saturation change")),
+      row(&StrokeEmitterDesc::value_jitter, number("value_jitter", 0, 1, "Random value change")),
+      row(&StrokeEmitterDesc::brush,
+          choice("brush", kBrushKindNames, "Brush: procedural bristle or flat, or an image")),
+      row(&StrokeEmitterDesc::brush_image,
+          path("brush_image", "Brush image (PNG with alpha), for brush \"image\"").files(FileType::brush)),
+      row(&StrokeEmitterDesc::bristles,
+          number("bristles", 1, 256, "Bristle count across a procedural stroke").log_slider(1, 64)),
+      row(&StrokeEmitterDesc::pressure, number("pressure", 0, 1, "Alpha falloff along the stroke")),
+      row(&StrokeEmitterDesc::segments,
+          integer("segments", 1, 64,
+                  "Most ribbon segments along each stroke; fewer where the surface is flat")),
+      row(&StrokeEmitterDesc::offset,
+          number("offset", 0, 1e6, "Lift above the surface; 0 picks one from the object's size")
+              .log_slider(0.001, 1)
+              .labelled("Lift")),
+      row(&StrokeEmitterDesc::indirect, toggle("indirect",
+                                               "Light bouncing off diffuse and glossy surfaces sees the "
+                                               "strokes; off, it sees the object under them (faster)")
+                                            .labelled("In bounce light"))};
+};
 
 // ---------------------------------------------------------------- painterly pixel filter
 enum class PainterlyFilter { none, kuwahara, anisotropic };

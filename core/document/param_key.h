@@ -1,6 +1,6 @@
 // A struct's parameters as bytes, for cache keys: two structs of one type have
 // equal keys exactly when their parameters are equal. Written through the same
-// visit_params lists as everything else, so a new parameter is part of the key.
+// parameter tables as everything else, so a new parameter is part of the key.
 #pragma once
 
 #include "core/document/desc.h"
@@ -27,8 +27,8 @@ void append_bytes(std::string& key, const T& value) {
 struct Visitor {
   std::string* key;
   template <class T>
-  void operator()(const Param&, T& field) {
-    append_key(*key, static_cast<const T&>(field));
+  void operator()(const Param&, const T& field) {
+    append_key(*key, field);
   }
 };
 
@@ -47,9 +47,8 @@ void append_key(std::string& key, const T& value) {
     append_bytes(key, value.size());
     for (const auto& item : value) append_key(key, item);
   } else if constexpr (ParamGroup<T>) {
-    T copy = value;  // visit_params takes a mutable struct
     Visitor visitor{&key};
-    visit_params(copy, visitor);
+    visit_params(value, visitor);
   } else {
     append_bytes(key, value);
   }

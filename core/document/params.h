@@ -1,13 +1,15 @@
-// One parameter list per description struct (docs/architecture.md, "The shape"). Each struct
-// has a free function `visit_params(Desc&, Visitor&)` that names every editable
-// field once with its range, default and doc; JSON reading and writing,
-// validation messages and the editor's widgets are all visitors over it.
+// One parameter table per description struct (docs/architecture.md, "Parameter tables"):
+// `ParamTable<Desc>::rows` names every editable field once, as a member pointer with
+// its range, default, stage and doc. JSON reading and writing, checks, cache keys,
+// stage diffs, animation paths and the editor's widgets are all walks over it.
 #pragma once
 
 #include <array>
 #include <limits>
 #include <span>
 #include <string_view>
+#include <tuple>
+#include <type_traits>
 
 namespace inkray {
 
@@ -24,8 +26,8 @@ enum class ParamKind {
   path,       // std::string, a file path relative to the scene file
   choice,     // an enum with a name table
   color_list, // std::vector<Color>, e.g. a colour ramp
-  group,      // a nested struct with its own visit_params (a JSON object)
-  list,       // std::vector of a struct with its own visit_params (a JSON array of objects)
+  group,      // a nested struct with its own parameter table (a JSON object)
+  list,       // std::vector of a struct with its own parameter table (a JSON array of objects)
   nodes,      // a material graph's nodes (graph_desc.h): a JSON array of tagged objects with ids
 };
 
@@ -149,12 +151,64 @@ constexpr Param at(Stage stage, Param p) {
   return p;
 }
 
-// A struct with its own parameter list: visitors treat it as a nested group.
-struct ParamProbe {
-  template <class T>
-  void operator()(const Param&, T&) {}
+// ---------------------------------------------------------------- parameter tables
+// One row of a struct's parameter list: a pointer to the member and its Param. The
+// member may belong to a base of the struct (ToonDesc's rows point into ToonParams,
+// the block the compiled material shares).
+template <class Owner, class T>
+struct ParamRow {
+  using owner_type = Owner;
+  using value_type = T;
+  T Owner::*member;
+  Param param;
 };
+template <class Owner, class T>
+constexpr ParamRow<Owner, T> row(T Owner::*member, Param param) {
+  return {member, param};
+}
+
+// ParamTable<S>::rows is S's parameter list: a tuple of ParamRow, in the order JSON
+// writes them and the editor shows them. Specialised after each description struct;
+// there is no general definition, so a struct without a list is not a ParamGroup.
+template <class S>
+struct ParamTable;
+
+// A struct with its own parameter list: walkers treat it as a nested group.
 template <class T>
-concept ParamGroup = requires(T& t, ParamProbe& probe) { visit_params(t, probe); };
+concept ParamGroup = requires {
+  ParamTable<std::remove_const_t<T>>::rows;
+};
+
+// Calls f(param, field) for each row of desc's list in order; the field is const
+// when desc is, so a walk that only reads needs neither a copy nor a cast.
+template <class D, class F>
+requires ParamGroup<D>
+constexpr void for_each_param(D& desc, F&& f) {
+  std::apply([&](const auto&... r) { (f(r.param, desc.*(r.member)), ...); },
+             ParamTable<std::remove_const_t<D>>::rows);
+}
+
+// Calls f(param, field_of_a, field_of_b) for each row: two values of one struct side by side.
+template <ParamGroup S, class F>
+constexpr void for_each_param_pair(const S& a, const S& b, F&& f) {
+  std::apply([&](const auto&... r) { (f(r.param, a.*(r.member), b.*(r.member)), ...); }, ParamTable<S>::rows);
+}
+
+// Calls f(param, type_tag) for each row without a value: f receives
+// std::type_identity<FieldType>.
+template <ParamGroup S, class F>
+constexpr void for_each_param_decl(F&& f) {
+  std::apply(
+      [&](const auto&... r) {
+        (f(r.param, std::type_identity<typename std::decay_t<decltype(r)>::value_type>{}), ...);
+      },
+      ParamTable<S>::rows);
+}
+
+// The visitor form: v(param, field) for each row, as JSON reading and writing, checks
+// and the editor's widgets call it.
+template <class D, class V>
+requires ParamGroup<D>
+constexpr void visit_params(D& desc, V& v) { for_each_param(desc, v); }
 
 }  // namespace inkray

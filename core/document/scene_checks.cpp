@@ -1,5 +1,5 @@
-// Document-wide checks. Asset paths are found generically: a visitor over every
-// struct's visit_params picks out ParamKind::path fields, so a new texture or shape
+// Document-wide checks. Asset paths are found generically: a walk over every
+// struct's parameter table picks out ParamKind::path fields, so a new texture or shape
 // type with a file is checked without a change here.
 #include "core/document/scene_checks.h"
 
@@ -31,7 +31,7 @@ struct AssetCollector {
   AssetKind kind = AssetKind::image;
 
   template <class T>
-  void operator()(const Param& p, T& field) {
+  void operator()(const Param& p, const T& field) {
     if constexpr (std::is_same_v<T, std::string>) {
       if (p.kind == ParamKind::path) out.push_back({child_path(at, p.name), field, kind, p.required});
     } else if constexpr (std::is_same_v<T, ColorInput>) {
@@ -47,9 +47,8 @@ struct AssetCollector {
     std::visit(
         [&]<class A>(const A& alternative) {
           if constexpr (Tagged<A>) {
-            A copy = alternative;  // visit_params takes a mutable struct
             AssetCollector collector{path, out, std::is_same_v<A, MeshDesc> ? AssetKind::mesh : AssetKind::image};
-            visit_params(copy, collector);
+            visit_params(alternative, collector);
           }
         },
         value);
@@ -73,9 +72,8 @@ std::vector<AssetRef> collect_assets(const SceneDesc& scene) {
   // An emitter keeps its brush_image while another brush is chosen; only a used one must exist.
   for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
     if (scene.strokes[i].brush != BrushKind::image) continue;
-    StrokeEmitterDesc copy = scene.strokes[i];
     AssetCollector collector{element_path("strokes", i), assets, AssetKind::brush};
-    visit_params(copy, collector);
+    visit_params(scene.strokes[i], collector);
   }
   return assets;
 }

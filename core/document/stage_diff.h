@@ -1,7 +1,7 @@
 // Which stages separate two documents (docs/architecture.md, "Stages"): the
 // document is compared section by section, and within a struct parameter by
-// parameter through its visit_params list, each difference naming the stage of
-// the parameter that differs.
+// parameter through its parameter table (for_each_param_pair), each difference
+// naming the stage of the parameter that differs.
 #pragma once
 
 #include "core/document/desc.h"
@@ -42,24 +42,6 @@ struct is_variant : std::false_type {};
 template <class... A>
 struct is_variant<std::variant<A...>> : std::true_type {};
 
-// Visits `before` (a copy: visit_params takes mutable structs) and finds each field's
-// counterpart in `after` at the same offset: both are the same struct type.
-class Visitor {
- public:
-  Visitor(const void* before, const void* after, Stage section, StageSet* out)
-      : before_(static_cast<const char*>(before)), after_(static_cast<const char*>(after)), section_(section),
-        out_(out) {}
-
-  template <class T>
-  void operator()(const Param& p, T& field);
-
- private:
-  const char* before_;
-  const char* after_;
-  Stage section_;
-  StageSet* out_;
-};
-
 }  // namespace stage_diff_detail
 
 // Stages of the parameters that differ between two structs of one type; a
@@ -80,20 +62,13 @@ StageSet changed_stages(const T& before, const T& after, Stage section) {
           before);
     }
   } else if constexpr (ParamGroup<T>) {
-    T copy = before;
-    stage_diff_detail::Visitor visitor(&copy, &after, section, &out);
-    visit_params(copy, visitor);
+    for_each_param_pair(before, after, [&](const Param& p, const auto& b, const auto& a) {
+      out.add(changed_stages(b, a, p.stage == Stage::inherit ? section : p.stage));
+    });
   } else if (!(before == after)) {
     out.add(section);
   }
   return out;
-}
-
-template <class T>
-void stage_diff_detail::Visitor::operator()(const Param& p, T& field) {
-  const auto offset = reinterpret_cast<const char*>(&field) - before_;
-  const T& other = *reinterpret_cast<const T*>(after_ + offset);
-  out_->add(changed_stages(static_cast<const T&>(field), other, p.stage == Stage::inherit ? section_ : p.stage));
 }
 
 // One object: its shape is `geometry`, its transform `object`, the rest by parameter.

@@ -147,11 +147,11 @@ LightTerm light_term(const RenderScene& scene, const Light& light, const ToonMat
 
 float ramp_v(const ToonMaterial& m, const ToonHit& hit) {
   switch (m.ramp_axis) {
-    case ToonRampLookup::depth: {
+    case ToonRampAxis::depth: {
       const float span = m.ramp_far - m.ramp_near;
       return span != 0.f ? glm::clamp((hit.view_depth - m.ramp_near) / span, 0.f, 1.f) : 0.f;
     }
-    case ToonRampLookup::facing:
+    case ToonRampAxis::facing:
       return glm::clamp(glm::dot(hit.ns, hit.wo), 0.f, 1.f);
     default:
       return 0.5f;

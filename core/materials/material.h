@@ -57,13 +57,24 @@ struct GraphMaterial {
 using Material = std::variant<DiffuseMaterial, ConductorMaterial, DielectricMaterial, EmissiveMaterial,
                               UnlitMaterial, TransparentMaterial, ToonMaterial, MixMaterial, GraphMaterial>;
 
+// Writes one valued input of a closure into its material (the alternative the leaf's
+// template holds): bound by the input's socket name when the graph is compiled
+// (core/compiler/closure_inputs.h), so no list restates the order of the sockets.
+using ClosureSetter = void (*)(Material& material, const Vec3& value);
+
+// One valued input of a closure: the register holding it, what it accepts, and
+// where it goes in the material.
+struct ClosureInput {
+  uint16_t reg = 0;
+  ClosureInputBounds bounds;  // shader_program.h
+  ClosureSetter set = nullptr;
+};
+
 // One way a graph's surface can be at a hit (shader_program.h): the template
-// compiled from the closure node's settings, and the registers holding its valued
-// inputs in parameter-list order.
+// compiled from the closure node's settings, and its valued inputs.
 struct ClosureLeaf {
   Material tmpl;
-  std::vector<uint16_t> inputs;
-  std::vector<ClosureInputBounds> bounds;  // one per input (shader_program.h)
+  std::vector<ClosureInput> inputs;
   bool constant = false;  // every input is a constant: tmpl already holds them and is used as it is
 };
 

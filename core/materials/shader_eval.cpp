@@ -3,7 +3,6 @@
 // loop reads a graph's surface exactly as it reads a plain material.
 #include "core/materials/shader_eval.h"
 
-#include "core/base/overloaded.h"
 #include "core/math/color_space.h"
 #include "core/math/hash.h"
 
@@ -188,72 +187,18 @@ void run_shader(const ShaderProgram& program, const ShadingPoint& sp, ShaderRegi
   }
 }
 
-// The valued inputs are in the order compile_graph stored them (the description's
-// parameter order), each with its parameter's hard range and default. A leaf with
-// fewer inputs than its kind reads (the black stand-in of an unlinked closure input
-// has none) is its template as it is.
+// Each input is set by its own setter, found by socket name when the graph was
+// compiled; the black stand-in of an unlinked closure input has none and is its
+// template as it is.
 void materialise(const ClosureLeaf& leaf, const Vec3* r, Material& scratch) {
   scratch = leaf.tmpl;
-  const size_t count = std::min(leaf.inputs.size(), leaf.bounds.size());
-  const auto value = [&](size_t i) {
-    const ClosureInputBounds& b = leaf.bounds[i];
-    const Vec3& v = r[leaf.inputs[i]];
-    Vec3 out;
-    for (int c = 0; c < 3; ++c) out[c] = std::isfinite(v[c]) ? std::clamp(v[c], b.min, b.max) : b.fallback[c];
-    return out;
-  };
-  const auto num = [&](size_t i) { return value(i).x; };
-  const auto tex = [&](size_t i) { return Texture{ConstantTexture{value(i)}}; };
-  std::visit(Overloaded{
-                 [&](DiffuseMaterial& m) {
-                   if (count < 1) return;
-                   m.albedo = tex(0);
-                 },
-                 [&](ConductorMaterial& m) {
-                   if (count < 2) return;
-                   m.color = tex(0);
-                   m.alpha = sqr(num(1));
-                 },
-                 [&](DielectricMaterial& m) {
-                   if (count < 3) return;
-                   m.bsdf.eta = num(0);
-                   m.bsdf.alpha = sqr(num(1));
-                   m.bsdf.tint = value(2);
-                 },
-                 [&](EmissiveMaterial& m) {
-                   if (count < 2) return;
-                   m.color = tex(0);
-                   m.strength = num(1);
-                 },
-                 [&](UnlitMaterial& m) {
-                   if (count < 1) return;
-                   m.color = tex(0);
-                 },
-                 [&](TransparentMaterial& m) {
-                   if (count < 1) return;
-                   m.tint = value(0);
-                 },
-                 [&](ToonMaterial& m) {
-                   if (count < kToonClosureInputs.size()) return;
-                   m.color = tex(0);
-                   m.shadow_color = value(1);
-                   m.threshold = num(2);
-                   m.softness = num(3);
-                   m.ramp_near = num(4);
-                   m.ramp_far = num(5);
-                   m.specular_color = value(6);
-                   m.specular_size = num(7);
-                   m.shininess = num(8);
-                   m.rim_color = value(9);
-                   m.rim_width = num(10);
-                   m.rim_threshold = num(11);
-                   m.environment = num(12);
-                 },
-                 // Graph compilation makes no leaf of these.
-                 [](MixMaterial&) {},
-                 [](GraphMaterial&) {},
-             },
-             scratch);
+  for (const ClosureInput& in : leaf.inputs) {
+    const ClosureInputBounds& b = in.bounds;
+    const Vec3& v = r[in.reg];
+    Vec3 value;
+    for (int c = 0; c < 3; ++c) value[c] = std::isfinite(v[c]) ? std::clamp(v[c], b.min, b.max) : b.fallback[c];
+    in.set(scratch, value);
+  }
 }
 
 ResolvedMaterial run_graph(const ShaderProgram& program, const ShadingPoint& sp, float u, Material& scratch) {

@@ -28,23 +28,14 @@ inline ResolvedMaterial pick_closure(const ShaderProgram& program, const ShaderR
                                      Material& scratch) {
   return pick_closure(program, registers.data(), u, scratch);
 }
-// Copies the leaf's template into `out` and sets its inputs from the registers, each
-// clamped to its parameter's hard range and a non-finite one replaced by the default
-// (ClosureInputBounds); a leaf without inputs is its template. The compiler uses it to
-// fill constant leaves.
+// Copies the leaf's template into `out` and sets its inputs from the registers through
+// their setters, each clamped to its parameter's hard range and a non-finite one
+// replaced by the default (ClosureInputBounds); a leaf without inputs is its template.
+// The compiler uses it to fill constant leaves.
 void materialise(const ClosureLeaf& leaf, const Vec3* registers, Material& out);
 // Runs the program if it has code and picks the closure: what resolve_material does for a graph.
 ResolvedMaterial run_graph(const ShaderProgram& program, const ShadingPoint& sp, float u, Material& scratch);
 // The output node's line and stroke overrides at a hit.
 SurfaceOverrides shader_overrides(const ShaderProgram& program, const ShadingPoint& sp);
-
-// The order of each closure kind's valued inputs, as the graph compiler stores
-// them in ClosureLeaf::inputs: the names of the description's parameter list that
-// are sockets (settings such as `bands` or `environment_shadows` are not: they come
-// with the leaf's template). Checked against material_desc.h by
-// tests/materials/shader_nodes_test.cpp.
-inline constexpr std::array<std::string_view, 13> kToonClosureInputs = {
-    "color",          "shadow_color",  "threshold", "softness",  "ramp_near", "ramp_far",     "specular_color",
-    "specular_size", "shininess", "rim_color", "rim_width", "rim_threshold", "environment"};
 
 }  // namespace inkray

@@ -5,39 +5,20 @@
 
 #include "core/image/rgb_image.h"
 #include "core/materials/texture.h"
+#include "core/materials/toon_params.h"
 
 #include <memory>
 #include <vector>
 
 namespace inkray {
 
-// Second axis of a 2D ramp image (X-toon, Barla et al. 2006).
-enum class ToonRampLookup { none, depth, facing };
-
-struct ToonMaterial {
+// The settings are the document's (ToonParams); the colour and the ramps compiled.
+struct ToonMaterial : ToonParams {
   Texture color;  // lit colour; multiplied by the hit's vertex colour
-  Color shadow_color{0.25f};
-  int bands = 2;
-  float threshold = 0.5f;
-  float softness = 0.02f;
   // Evenly spaced stops over the light level; null or empty for bands. Shared so a
   // graph copies the material per hit without allocating.
   std::shared_ptr<const std::vector<Color>> ramp;
   std::shared_ptr<const RgbImage> ramp_image;  // null when unset; replaces ramp and bands
-  ToonRampLookup ramp_axis = ToonRampLookup::none;
-  float ramp_near = 1.f, ramp_far = 20.f;
-  bool specular = true;
-  Color specular_color{1.f};
-  float specular_size = 0.1f;
-  float shininess = 40.f;
-  bool rim = false;
-  Color rim_color{1.f};
-  float rim_width = 0.3f;
-  float rim_threshold = 0.5f;
-  float environment = 0.25f;  // weight of the sky in the light level (toon_shading.cpp)
-  bool environment_shadows = false;
-  bool receive_indirect = false;
-  bool bounce_indirect = true;
 };
 
 // 0 below edge - width/2, 1 above edge + width/2, smooth in between; a hard

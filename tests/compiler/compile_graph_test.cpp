@@ -176,7 +176,7 @@ TEST(GraphLowering, ConstantsFoldAway) {
   SurfaceInteraction si;
   ShaderRegisters r;
   run_shader(*c.program, test_point(si), r);
-  EXPECT_NEAR(r[c.program->leaves[0].inputs[0]].x, 0.5f, 1e-6f);
+  EXPECT_NEAR(r[c.program->leaves[0].inputs[0].reg].x, 0.5f, 1e-6f);
   // One input that reads the hit keeps exactly the work that depends on it.
   add(g, "geo", GeometryNode{});
   link(g, "geo", "facing", "b", "b");

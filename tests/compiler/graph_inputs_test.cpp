@@ -272,7 +272,7 @@ TEST(GraphInputs, MaterialiseClampsRunTimeValuesAndReplacesNonFiniteOnesWithTheD
         const CompiledGraph c = compile(g, kBase);
         ASSERT_TRUE(c.program) << c.errors.front();
         ASSERT_EQ(c.program->leaves.size(), 1u);
-        const uint16_t reg = c.program->leaves[0].inputs.at(index);
+        const uint16_t reg = c.program->leaves[0].inputs.at(index).reg;
         for (const float v : {1e30f, -1e30f, kNan, kInf, -kInf}) {
           ShaderRegisters registers;
           run_shader(*c.program, hits.sp[0], registers);

@@ -137,7 +137,7 @@ TEST(SceneJsonMaterialChecks, ToonRampImageIsCheckedAndLoaded) {
   const auto& m = std::get<ToonMaterial>(compiled.scene->materials[1]);
   ASSERT_TRUE(m.ramp_image);
   EXPECT_EQ(m.ramp_image->width, 4);
-  EXPECT_EQ(m.ramp_axis, ToonRampLookup::facing);
+  EXPECT_EQ(m.ramp_axis, ToonRampAxis::facing);
 }
 
 TEST(SceneJsonMaterialChecks, ToonAndMixLoadFromJson) {

@@ -368,15 +368,6 @@ TEST(ShaderNodes, NoSurfaceIsNoMaterial) {
   EXPECT_FALSE(pick_closure(*c.program, r, 0.5f, scratch).material);
 }
 
-// The toon closure's sockets, in the order materialise() reads them, are its
-// description's valued parameters.
-TEST(ShaderNodes, ToonClosureInputsFollowTheParameterList) {
-  std::vector<std::string_view> sockets;
-  for (const SocketInfo& s : node_inputs_of<ToonDesc>())
-    if (s.has_value) sockets.push_back(s.name);
-  EXPECT_EQ(sockets, std::vector<std::string_view>(kToonClosureInputs.begin(), kToonClosureInputs.end()));
-}
-
 // A toon node's environment weight is a socket, its environment shadows a setting
 // on the node: both reach the material the path tracer shades with, linked or not.
 TEST(ShaderNodes, ToonNodeCarriesTheEnvironmentWeightAndShadows) {

@@ -50,7 +50,7 @@ inline Vec3 socket_value(GraphDesc g, const std::string& node, const std::string
   if (!c.program) return Vec3(-999.f);
   ShaderRegisters registers;
   run_shader(*c.program, sp, registers);
-  return registers[c.program->leaves.at(0).inputs.at(0)];
+  return registers[c.program->leaves.at(0).inputs.at(0).reg];
 }
 
 // A hit for node tests: a point facing +z seen from +z.
