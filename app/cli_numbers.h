@@ -32,8 +32,8 @@ std::string read_option_number(std::string_view option, std::string_view text, T
     return {};
   }
   std::ostringstream message;
-  message << option << ": expected " << (std::is_integral_v<T> ? "an integer" : "a number") << " in [" << lo << ", "
-          << hi << "], got \"" << text << "\"";
+  message << option << ": expected " << (std::is_integral_v<T> ? "an integer" : "a number") << " in [" << lo
+          << ", " << hi << "], got \"" << text << "\"";
   return message.str();
 }
 

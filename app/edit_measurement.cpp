@@ -85,8 +85,7 @@ void nudge(MaterialVariant& material, int step) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, DiffuseDesc>) {
           nudge(d.albedo, step);
-        } else if constexpr (std::is_same_v<T, DielectricDesc> ||
-                             std::is_same_v<T, TransparentDesc>) {
+        } else if constexpr (std::is_same_v<T, DielectricDesc> || std::is_same_v<T, TransparentDesc>) {
           d.tint = nudged(d.tint, step);
         } else if constexpr (std::is_same_v<T, MixDesc>) {
           nudge(d.factor, step);
@@ -106,7 +105,8 @@ float& intensity(LightVariant& light) {
 int first_used_graph(const SceneDesc& s) {
   for (const ObjectDesc& o : s.objects)
     for (size_t m = 0; m < s.materials.size(); ++m)
-      if (s.materials[m].name == o.material && std::holds_alternative<GraphDesc>(s.materials[m].data)) return int(m);
+      if (s.materials[m].name == o.material && std::holds_alternative<GraphDesc>(s.materials[m].data))
+        return int(m);
   return -1;
 }
 
@@ -125,7 +125,6 @@ int first_emissive(const SceneDesc& s) {
   }
   return -1;
 }
-
 
 // Document edit `step` of `kind`: one parameter set from its value in `base` (the document
 // when the kind started), so steps do not pile up; the camera orbits on as a drag does.
@@ -160,8 +159,7 @@ SceneDesc edited(EditKind kind, int step, const SceneDesc& base, SceneDesc s) {
     case EditKind::transform: {
       // In the scene's units (the Cornell box is in millimetres): a fraction of the view distance.
       const float unit = 0.002f * glm::length(base.camera.look_from - base.camera.look_at);
-      s.objects[0].transform.translate =
-          base.objects[0].transform.translate + Vec3(unit * t, 0.f, 0.f);
+      s.objects[0].transform.translate = base.objects[0].transform.translate + Vec3(unit * t, 0.f, 0.f);
       break;
     }
     case EditKind::line_colour:
@@ -181,15 +179,24 @@ SceneDesc edited(EditKind kind, int step, const SceneDesc& base, SceneDesc s) {
 
 const char* edit_label(EditKind kind) {
   switch (kind) {
-    case EditKind::camera: return "Orbit";
-    case EditKind::material: return "Material colour";
-    case EditKind::node: return "Node colour";
-    case EditKind::light: return "Light intensity";
-    case EditKind::transform: return "Move";
-    case EditKind::line_colour: return "Line colour";
-    case EditKind::stroke_parameter: return "Stroke hue jitter";
-    case EditKind::exposure: return "Exposure";
-    case EditKind::gizmo_drag: return "Move";
+    case EditKind::camera:
+      return "Orbit";
+    case EditKind::material:
+      return "Material colour";
+    case EditKind::node:
+      return "Node colour";
+    case EditKind::light:
+      return "Light intensity";
+    case EditKind::transform:
+      return "Move";
+    case EditKind::line_colour:
+      return "Line colour";
+    case EditKind::stroke_parameter:
+      return "Stroke hue jitter";
+    case EditKind::exposure:
+      return "Exposure";
+    case EditKind::gizmo_drag:
+      return "Move";
   }
   return "";
 }
@@ -199,8 +206,7 @@ const char* edit_label(EditKind kind) {
 // exposure change moves them one way, and a re-encode of the same film lands on the mapped
 // byte exactly. Counts the pixels nearer the mapped value among those the change moves by
 // two bytes or more (standard view transform).
-bool shows_new_exposure(const ViewportSnapshot& before, const ViewportSnapshot& now,
-                        float scale) {
+bool shows_new_exposure(const ViewportSnapshot& before, const ViewportSnapshot& now, float scale) {
   if (now.width != before.width || now.height != before.height) return true;  // a restart: rendered anew
   std::array<int, 256> mapped{};
   for (int b = 0; b < 256; ++b) {
@@ -429,8 +435,8 @@ void EditMeasurement::finish_kind(EditorApp& app) {
   // window takes llvmpipe 16-20 ms. The renderer's share ends when the image is published.
   char published[64] = "";
   if (!renderer.empty())
-    std::snprintf(published, sizeof published, "; renderer p50 %.1f ms p95 %.1f ms", percentile(renderer, 0.5),
-                  percentile(renderer, 0.95));
+    std::snprintf(published, sizeof published, "; renderer p50 %.1f ms p95 %.1f ms",
+                  percentile(renderer, 0.5), percentile(renderer, 0.95));
   std::printf("edit %s: first pixels p50 %.1f ms p95 %.1f ms; frame p95 %.2f ms; samples kept %s%s\n",
               std::string(kEditKindNames[size_t(kind())]).c_str(), percentile(latencies, 0.5),
               percentile(latencies, 0.95), percentile(frame_ms_, 0.95), kept, published);

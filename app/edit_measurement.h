@@ -24,11 +24,19 @@ using Clock = std::chrono::steady_clock;
 // drags the first object's translate gizmo along an axis, a step every frame, through
 // the gizmo's drag maths (ui/gizmo.h) and the same undoable edit as the mouse makes.
 enum class EditKind {
-  camera, material, node, light, transform, line_colour, stroke_parameter, exposure, gizmo_drag
+  camera,
+  material,
+  node,
+  light,
+  transform,
+  line_colour,
+  stroke_parameter,
+  exposure,
+  gizmo_drag
 };
 constexpr std::array<std::string_view, 9> kEditKindNames = {
-    "camera",           "material", "node",      "light",     "transform", "line-colour",
-    "stroke-parameter", "exposure", "gizmo-drag"};
+    "camera",      "material",         "node",     "light",     "transform",
+    "line-colour", "stroke-parameter", "exposure", "gizmo-drag"};
 
 // "camera, material, ...", for help and error messages.
 std::string edit_kind_list();

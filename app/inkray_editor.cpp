@@ -43,15 +43,15 @@ struct Options {
   std::vector<inkray::measure::EditKind> edit_kinds;  // empty: camera
   int threads = 0;
   int width = 1600, height = 900;
-  std::string select;  // object to select at start, so screenshots show the highlight
-  std::string node_material;  // material to open the node editor on
-  std::string node_layout;    // where to write the node editor's layout with the screenshot
-  std::string widget_report;  // where to write the named widgets' rectangles with the screenshot
+  std::string select;              // object to select at start, so screenshots show the highlight
+  std::string node_material;       // material to open the node editor on
+  std::string node_layout;         // where to write the node editor's layout with the screenshot
+  std::string widget_report;       // where to write the named widgets' rectangles with the screenshot
   std::vector<std::string> drops;  // files handed to the drop callback after the first frame
-  std::string scene_dump;     // where to write the document (JSON) with the screenshot
-  std::string input_script;   // keys and mouse moves to play, one a line (ui/editor_app.h)
-  std::string export_path;    // export through the dialog to this file, then take the screenshot
-  float ui_scale = 0.f;       // overrides the saved interface size when set
+  std::string scene_dump;          // where to write the document (JSON) with the screenshot
+  std::string input_script;        // keys and mouse moves to play, one a line (ui/editor_app.h)
+  std::string export_path;         // export through the dialog to this file, then take the screenshot
+  float ui_scale = 0.f;            // overrides the saved interface size when set
 };
 
 // GLFW's drop callback has no user pointer of its own: the window's points at the app.
@@ -121,7 +121,8 @@ bool parse(int argc, char** argv, Options* o) {
       for (size_t begin = 0; begin <= list.size();) {
         const size_t end = std::min(list.find(',', begin), list.size());
         const std::string name = list.substr(begin, end - begin);
-        const auto found = std::find(inkray::measure::kEditKindNames.begin(), inkray::measure::kEditKindNames.end(), name);
+        const auto found =
+            std::find(inkray::measure::kEditKindNames.begin(), inkray::measure::kEditKindNames.end(), name);
         if (found == inkray::measure::kEditKindNames.end()) {
           std::fprintf(stderr, "inkray: --edit: unknown kind \"%s\" (valid kinds: %s)\n", name.c_str(),
                        inkray::measure::edit_kind_list().c_str());
@@ -192,8 +193,9 @@ bool write_screenshot(const std::string& file, int width, int height) {
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const uint8_t* p = &rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4];  // GL rows go up
-      image.at(x, y) = inkray::Color(inkray::srgb_to_linear(p[0] / 255.f), inkray::srgb_to_linear(p[1] / 255.f),
-                                     inkray::srgb_to_linear(p[2] / 255.f));
+      image.at(x, y) =
+          inkray::Color(inkray::srgb_to_linear(p[0] / 255.f), inkray::srgb_to_linear(p[1] / 255.f),
+                        inkray::srgb_to_linear(p[2] / 255.f));
     }
   }
   std::string error;
@@ -219,9 +221,11 @@ int main(int argc, char** argv) {
     usage();
     return 2;
   }
-  glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "glfw error %d: %s\n", code, text); });
+  glfwSetErrorCallback(
+      [](int code, const char* text) { std::fprintf(stderr, "glfw error %d: %s\n", code, text); });
   if (!glfwInit()) {
-    std::fprintf(stderr, "inkray: cannot open a window (no display?); use inkray-render for headless renders\n");
+    std::fprintf(stderr,
+                 "inkray: cannot open a window (no display?); use inkray-render for headless renders\n");
     return 1;
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
@@ -274,8 +278,9 @@ int main(int argc, char** argv) {
     if (!opt.node_material.empty() && exit_code == 0) {
       inkray::EditorState& state = app.state();
       const auto& materials = state.document.scene().materials;
-      const auto found = std::find_if(materials.begin(), materials.end(),
-                                      [&](const inkray::MaterialDesc& m) { return m.name == opt.node_material; });
+      const auto found = std::find_if(materials.begin(), materials.end(), [&](const inkray::MaterialDesc& m) {
+        return m.name == opt.node_material;
+      });
       if (found == materials.end()) {
         std::fprintf(stderr, "inkray: --node-editor: no material named \"%s\"\n", opt.node_material.c_str());
         exit_code = 1;
@@ -290,10 +295,12 @@ int main(int argc, char** argv) {
     if (opt.measure_edits > 0 && exit_code == 0) {
       std::vector<inkray::measure::EditKind> kinds;
       for (inkray::measure::EditKind kind :
-           opt.edit_kinds.empty() ? std::vector<inkray::measure::EditKind>{inkray::measure::EditKind::camera} : opt.edit_kinds) {
-        if (const std::string why = inkray::measure::unavailable(kind, app.state().document.scene()); !why.empty()) {
-          std::fprintf(stderr, "inkray: --edit %s: %s\n", std::string(inkray::measure::kEditKindNames[size_t(kind)]).c_str(),
-                       why.c_str());
+           opt.edit_kinds.empty() ? std::vector<inkray::measure::EditKind>{inkray::measure::EditKind::camera}
+                                  : opt.edit_kinds) {
+        if (const std::string why = inkray::measure::unavailable(kind, app.state().document.scene());
+            !why.empty()) {
+          std::fprintf(stderr, "inkray: --edit %s: %s\n",
+                       std::string(inkray::measure::kEditKindNames[size_t(kind)]).c_str(), why.c_str());
           kind_skipped = true;
         } else {
           kinds.push_back(kind);
@@ -373,7 +380,8 @@ int main(int argc, char** argv) {
           for (const auto& f : e->written) std::printf("export wrote: %s\n", f.string().c_str());
         }
       }
-      const bool export_settled = opt.export_path.empty() || (export_finished_frame >= 0 && frame >= export_finished_frame + 5);
+      const bool export_settled =
+          opt.export_path.empty() || (export_finished_frame >= 0 && frame >= export_finished_frame + 5);
       const double seconds = std::chrono::duration<double>(clock::now() - start).count();
       if (!opt.screenshot.empty() && frame >= opt.frames && export_settled &&
           (app.viewport().shown_full_resolution() || seconds > 120.0)) {
@@ -384,14 +392,15 @@ int main(int argc, char** argv) {
         std::printf("viewport denoised: %d\n", app.viewport().shown_denoised() ? 1 : 0);
         std::printf("ui scale: %.2f\n", app.ui_scale());
         exit_code = write_screenshot(opt.screenshot, w, h) ? 0 : 1;
-        if (!opt.node_layout.empty() && !write_text(opt.node_layout, app.node_editor().layout())) exit_code = 1;
+        if (!opt.node_layout.empty() && !write_text(opt.node_layout, app.node_editor().layout()))
+          exit_code = 1;
         if (!opt.scene_dump.empty() &&
             !write_text(opt.scene_dump, inkray::scene_to_string(app.state().document.scene()))) {
           exit_code = 1;
         }
         if (!opt.widget_report.empty() &&
-            !write_text(opt.widget_report, "window 0 0 " + std::to_string(w) + " " + std::to_string(h) + "\n" +
-                                               inkray::widget_report::text())) {
+            !write_text(opt.widget_report, "window 0 0 " + std::to_string(w) + " " + std::to_string(h) +
+                                               "\n" + inkray::widget_report::text())) {
           exit_code = 1;
         }
         break;

@@ -123,7 +123,9 @@ std::optional<MergeOptions> parse(int argc, char** argv, std::string* error) {
     return std::nullopt;
   }
   std::vector<PlannedOutput> outputs = {{o.output.string(), o.output}};
-  if (o.denoise) outputs.push_back({"--denoise's raw image " + raw_image_path(o.output).string(), raw_image_path(o.output)});
+  if (o.denoise)
+    outputs.push_back(
+        {"--denoise's raw image " + raw_image_path(o.output).string(), raw_image_path(o.output)});
   for (const AovFile& a : o.aovs)
     outputs.push_back({"--aov " + std::string(kAovNames[size_t(a.aov)]) + "=" + a.file.string(), a.file});
   for (const auto& planned : outputs)
@@ -182,16 +184,17 @@ int run(const MergeOptions& opt) {
       // One line: the first problem (a partial's scene was written by inkray, so any is damage).
       const std::string first = scene.errors.empty() ? "unreadable" : scene.errors.front();
       std::fprintf(stderr, "error: %s%s\n", first.c_str(),
-                   scene.errors.size() > 1 ? (" (and " + std::to_string(scene.errors.size() - 1) + " more)").c_str()
-                                           : "");
+                   scene.errors.size() > 1
+                       ? (" (and " + std::to_string(scene.errors.size() - 1) + " more)").c_str()
+                       : "");
       return 1;
     }
     SceneDesc desc = std::move(*scene.scene);
     if (!desc.animation.empty()) desc = scene_at_frame(desc, desc.render.frame);
     ThreadBudget pool(opt.threads);
     if (opt.denoise) denoised = denoise(*merged.film, &pool);
-    switch (write_film_outputs(*merged.film, desc.render, desc.outlines, opt.output, opt.aovs, &error, &pool, {},
-                               {}, denoised ? &denoised->image : nullptr)) {
+    switch (write_film_outputs(*merged.film, desc.render, desc.outlines, opt.output, opt.aovs, &error, &pool,
+                               {}, {}, denoised ? &denoised->image : nullptr)) {
       case OutputsWritten::all:
         break;
       case OutputsWritten::cancelled:

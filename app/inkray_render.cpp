@@ -121,7 +121,8 @@ PartialInfo film_info(const RenderSession& session, const SceneDesc& desc, const
 
 // --decide-lines: the decisions of the scene's frame, traced over the whole image,
 // written atomically.
-int write_line_decisions(const RenderCliOptions& opt, const SceneDesc& desc, Cancel::Clock::time_point start) {
+int write_line_decisions(const RenderCliOptions& opt, const SceneDesc& desc,
+                         Cancel::Clock::time_point start) {
   const double time_limit = opt.time_seconds.value_or(desc.render.time_limit);
   CompileOptions options;
   options.cancel = Cancel(nullptr, deadline_after(start, time_limit));
@@ -129,12 +130,14 @@ int write_line_decisions(const RenderCliOptions& opt, const SceneDesc& desc, Can
   SceneCompiler compiler;
   const CompileResult compiled = compiler.compile(desc, options);
   if (compiled.cancelled) {
-    std::fprintf(stderr, "error: %s: the time limit of %g s ran out while building the scene; nothing was written\n",
+    std::fprintf(stderr,
+                 "error: %s: the time limit of %g s ran out while building the scene; nothing was written\n",
                  opt.scene.c_str(), time_limit);
     return 1;
   }
   if (!compiled.scene) {
-    for (const auto& e : compiled.errors) std::fprintf(stderr, "error: %s: %s\n", opt.scene.c_str(), e.c_str());
+    for (const auto& e : compiled.errors)
+      std::fprintf(stderr, "error: %s: %s\n", opt.scene.c_str(), e.c_str());
     return 1;
   }
   RenderSession session(opt.threads.value_or(0));
@@ -153,7 +156,8 @@ int write_line_decisions(const RenderCliOptions& opt, const SceneDesc& desc, Can
 }
 
 // --line-decisions: the file's decisions, when they are of this render (else an error line).
-bool read_matching_decisions(const RenderCliOptions& opt, const PartialInfo& expected, LineDecisions* decisions) {
+bool read_matching_decisions(const RenderCliOptions& opt, const PartialInfo& expected,
+                             LineDecisions* decisions) {
   PartialInfo info;
   std::string error;
   if (!read_line_decisions(opt.line_decisions, &info, decisions, &error)) {
@@ -228,7 +232,8 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
     expected.first_pass = first;
     std::string problem = partial_mismatch(resumed, expected);
     if (problem.empty() && resumed.window != window)
-      problem = "it holds pixels " + describe_window(resumed.window) + ", this render " + describe_window(window);
+      problem =
+          "it holds pixels " + describe_window(resumed.window) + ", this render " + describe_window(window);
     if (problem.empty() && resumed.first_pass != first)
       problem = "it starts at sample " + std::to_string(resumed.first_pass) + ", this render at " +
                 std::to_string(first);
@@ -243,7 +248,8 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
     }
   }
   LineDecisions decisions;
-  if (!opt.line_decisions.empty() && !read_matching_decisions(opt, film_info(session, desc, window), &decisions))
+  if (!opt.line_decisions.empty() &&
+      !read_matching_decisions(opt, film_info(session, desc, window), &decisions))
     return 1;
   const LineDecisions* decided = opt.line_decisions.empty() ? nullptr : &decisions;
   if (resumed_film) {
@@ -254,8 +260,7 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
     session.continue_from(first, first, {}, decided);
   }
 
-  if (opt.noise_threshold)
-    session.set_adaptive({*opt.noise_threshold, uint32_t(opt.min_spp.value_or(16))});
+  if (opt.noise_threshold) session.set_adaptive({*opt.noise_threshold, uint32_t(opt.min_spp.value_or(16))});
 
   // --time is a budget (docs/final-renders.md, "Time limits"): the render gets what
   // reading and building left of it, less what the painterly filter and the denoiser,
@@ -265,8 +270,8 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
   if (time_limit > 0.0) {
     double filter_seconds = 0.0;
     if (!partial) {
-      filter_seconds =
-          1.25 * estimate_painterly_seconds(desc.render, desc.render.width, desc.render.height, &session.pool());
+      filter_seconds = 1.25 * estimate_painterly_seconds(desc.render, desc.render.width, desc.render.height,
+                                                         &session.pool());
       if (opt.denoise)
         filter_seconds += 1.25 * estimate_denoise_seconds(window.width(), window.height(), &session.pool());
     }
@@ -292,8 +297,8 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
     std::string error;
     if (write_partial_file(session.film(), info, files.checkpoint, &error)) return;
     if (checkpoint_error.empty())
-      std::fprintf(stderr, "%serror: checkpoint %s not written (the render goes on): %s\n", progress ? "\n" : "",
-                   files.checkpoint.c_str(), error.c_str());
+      std::fprintf(stderr, "%serror: checkpoint %s not written (the render goes on): %s\n",
+                   progress ? "\n" : "", files.checkpoint.c_str(), error.c_str());
     checkpoint_error = error;
   };
   auto last_checkpoint = Cancel::Clock::now();
@@ -376,12 +381,14 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
     std::printf(", %llu non-finite samples dropped", (unsigned long long)s.nonfinite_samples);
   std::printf("\n");
   if (opt.noise_threshold)
-    std::printf("adaptive sampling: %u of %u tiles below %g when the render ended; %.1f samples per pixel on average\n",
-                s.tiles - s.active_tiles, s.tiles, *opt.noise_threshold,
-                double(s.paths) / (double(window.width()) * double(window.height())));
+    std::printf(
+        "adaptive sampling: %u of %u tiles below %g when the render ended; %.1f samples per pixel on "
+        "average\n",
+        s.tiles - s.active_tiles, s.tiles, *opt.noise_threshold,
+        double(s.paths) / (double(window.width()) * double(window.height())));
   if (denoised)
-    std::printf("denoised in %.3f s: estimated rel. error %.5f denoised (%s), %.5f raw (%s)\n", denoise_seconds,
-                denoised->relative_error, files.output.c_str(), s.relative_error,
+    std::printf("denoised in %.3f s: estimated rel. error %.5f denoised (%s), %.5f raw (%s)\n",
+                denoise_seconds, denoised->relative_error, files.output.c_str(), s.relative_error,
                 raw_image_path(files.output).c_str());
   return 0;
 }

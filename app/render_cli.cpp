@@ -99,11 +99,24 @@ std::optional<std::uint64_t> parse_size(std::string_view text) {
   int shift = 0;
   if (!text.empty()) {
     switch (text.back()) {
-      case 'k': case 'K': shift = 10; break;
-      case 'm': case 'M': shift = 20; break;
-      case 'g': case 'G': shift = 30; break;
-      case 't': case 'T': shift = 40; break;
-      default: break;
+      case 'k':
+      case 'K':
+        shift = 10;
+        break;
+      case 'm':
+      case 'M':
+        shift = 20;
+        break;
+      case 'g':
+      case 'G':
+        shift = 30;
+        break;
+      case 't':
+      case 'T':
+        shift = 40;
+        break;
+      default:
+        break;
     }
   }
   if (shift) text.remove_suffix(1);
@@ -250,8 +263,8 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
     if (!v) return false;
     long n = 0;
     if (!parse_number(*v, &n) || n < lo || n > hi) {
-      *error = std::string(flag) + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-               "], got \"" + std::string(*v) + "\"";
+      *error = std::string(flag) + ": expected an integer in [" + std::to_string(lo) + ", " +
+               std::to_string(hi) + "], got \"" + std::string(*v) + "\"";
       return false;
     }
     *out = int(n);
@@ -285,7 +298,8 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       if (!v) return std::nullopt;
       double t = 0.0;
       if (!parse_number(*v, &t) || !(t > 0.0) || t > 10.0) {
-        *error = "--noise-threshold: expected a relative error in (0, 10], e.g. 0.01, got \"" + std::string(*v) + "\"";
+        *error = "--noise-threshold: expected a relative error in (0, 10], e.g. 0.01, got \"" +
+                 std::string(*v) + "\"";
         return std::nullopt;
       }
       o.noise_threshold = t;
@@ -433,8 +447,9 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
   }
   if (o.samples) {
     if (o.noise_threshold) {
-      *error = "--noise-threshold decides from all of a pixel's samples; a slice (--samples) has only some of "
-               "them: adaptive sampling is for renders on one machine";
+      *error =
+          "--noise-threshold decides from all of a pixel's samples; a slice (--samples) has only some of "
+          "them: adaptive sampling is for renders on one machine";
       return std::nullopt;
     }
     if (o.spp) {

@@ -32,7 +32,7 @@ struct RenderCliOptions {
   std::vector<AovOutput> aovs;
   // --samples A B: passes [A, B) written as a partial (docs/final-renders.md).
   std::optional<std::pair<uint32_t, uint32_t>> samples;
-  std::optional<PixelWindow> crop;          // --crop X0 Y0 X1 Y1
+  std::optional<PixelWindow> crop;           // --crop X0 Y0 X1 Y1
   std::optional<double> checkpoint_minutes;  // --checkpoint
   // --decide-lines FILE: write adaptive line sampling's decisions and render nothing;
   // --line-decisions FILE: a slice reads them (docs/final-renders.md, "Line decisions").

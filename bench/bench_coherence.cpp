@@ -81,7 +81,8 @@ float bilinear(const std::vector<float>& layer, int w, int h, Vec2 p) {
   const int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
   const float fx = x - float(x0), fy = y - float(y0);
   const auto at = [&](int xx, int yy) { return layer[size_t(yy) * size_t(w) + size_t(xx)]; };
-  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
+  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) +
+         fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
 }
 
 enum Layer { kLines, kStrokes, kSurfaces, kLayerCount };
@@ -90,8 +91,10 @@ constexpr const char* kLayerNames[] = {"lines", "strokes", "surfaces"};
 std::vector<float> grey(const FrameImages& f, Layer layer) {
   std::vector<float> out(size_t(f.width) * size_t(f.height), 0.f);
   for (size_t i = 0; i < out.size(); ++i) {
-    if (layer == kLines) out[i] = f.lines.pixels.empty() ? 0.f : f.lines.pixels[i].x;
-    else out[i] = luminance(f.color.pixels[i]);
+    if (layer == kLines)
+      out[i] = f.lines.pixels.empty() ? 0.f : f.lines.pixels[i].x;
+    else
+      out[i] = luminance(f.color.pixels[i]);
   }
   return out;
 }
@@ -121,7 +124,8 @@ struct Sums {
 // into `earlier` through its depth; where `earlier` sees the same object at the same
 // depth there, the layers are compared. With `noise` set, `noise` (the same frame as
 // `later`, another seed) is read at the same sub-pixel offsets instead of `earlier`.
-void compare(const FrameImages& later, const FrameImages& earlier, const FrameImages* noise, const Layers& layers, Sums& sums) {
+void compare(const FrameImages& later, const FrameImages& earlier, const FrameImages* noise,
+             const Layers& layers, Sums& sums) {
   const int w = later.width, h = later.height;
   std::vector<float> a[kLayerCount], b[kLayerCount];
   const FrameImages& other = noise ? *noise : earlier;
@@ -152,9 +156,11 @@ void compare(const FrameImages& later, const FrameImages& earlier, const FrameIm
       // sub-pixel offset, so both go through the same interpolation.
       const Vec2 at = noise ? film + (back - glm::floor(back)) - Vec2(0.5f) : back;
       const bool stroke = layers.strokes.count(id) > 0;
-      if (!later.lines.pixels.empty()) sums.add(kLines, std::fabs(a[kLines][i] - bilinear(b[kLines], w, h, at)));
+      if (!later.lines.pixels.empty())
+        sums.add(kLines, std::fabs(a[kLines][i] - bilinear(b[kLines], w, h, at)));
       sums.add(stroke ? kStrokes : kSurfaces,
-               std::fabs(a[stroke ? kStrokes : kSurfaces][i] - bilinear(b[stroke ? kStrokes : kSurfaces], w, h, at)));
+               std::fabs(a[stroke ? kStrokes : kSurfaces][i] -
+                         bilinear(b[stroke ? kStrokes : kSurfaces], w, h, at)));
     }
   }
 }
@@ -166,19 +172,30 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const auto next = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
-    if (a == "--frames") o.frames = std::atoi(next().c_str());
-    else if (a == "--width") o.width = std::atoi(next().c_str());
-    else if (a == "--height") o.height = std::atoi(next().c_str());
-    else if (a == "--spp") o.spp = std::atoi(next().c_str());
-    else if (a == "--threads") o.threads = std::atoi(next().c_str());
-    else if (a == "--moving") o.keep_objects_moving = true;
-    else if (a == "--reseed-strokes") o.reseed_strokes = true;
+    if (a == "--frames")
+      o.frames = std::atoi(next().c_str());
+    else if (a == "--width")
+      o.width = std::atoi(next().c_str());
+    else if (a == "--height")
+      o.height = std::atoi(next().c_str());
+    else if (a == "--spp")
+      o.spp = std::atoi(next().c_str());
+    else if (a == "--threads")
+      o.threads = std::atoi(next().c_str());
+    else if (a == "--moving")
+      o.keep_objects_moving = true;
+    else if (a == "--reseed-strokes")
+      o.reseed_strokes = true;
     else if (a == "-h" || a == "--help") {
-      std::printf("usage: inkray-bench-coherence [SCENE] [--frames N] [--width W] [--height H] [--spp N] "
-                  "[--threads N] [--moving] [--reseed-strokes]\n(default scenes/animation.json with only its camera moving;\n"
-                  "--moving keeps its objects' tracks too; --reseed-strokes grows new strokes every frame, a control)\n");
+      std::printf(
+          "usage: inkray-bench-coherence [SCENE] [--frames N] [--width W] [--height H] [--spp N] "
+          "[--threads N] [--moving] [--reseed-strokes]\n(default scenes/animation.json with only its camera "
+          "moving;\n"
+          "--moving keeps its objects' tracks too; --reseed-strokes grows new strokes every frame, a "
+          "control)\n");
       return 0;
-    } else if (!a.empty() && a[0] != '-') o.scene = a;
+    } else if (!a.empty() && a[0] != '-')
+      o.scene = a;
     else {
       std::fprintf(stderr, "unknown option %s\n", a.c_str());
       return 2;
@@ -214,8 +231,9 @@ int main(int argc, char** argv) {
     for (size_t i = 0; i < desc.objects.size(); ++i)
       if (desc.objects[i].name == e.object) layers.strokes.insert(int(i));
 
-  std::printf("inkray-bench-coherence %s: %d frames from %d, %dx%d, %d spp; mean absolute difference per pixel\n",
-              o.scene.c_str(), o.frames, desc.render.frame_start, o.width, o.height, o.spp);
+  std::printf(
+      "inkray-bench-coherence %s: %d frames from %d, %dx%d, %d spp; mean absolute difference per pixel\n",
+      o.scene.c_str(), o.frames, desc.render.frame_start, o.width, o.height, o.spp);
   SceneCompiler compiler;
   Sums temporal, noise;
   FrameImages previous = render_frame(compiler, desc, desc.render.frame_start, 0, o);
@@ -238,7 +256,8 @@ int main(int argc, char** argv) {
     const double t = temporal.mean(layer), n = noise.mean(layer);
     const double tp = temporal.percentile(layer, 0.999), np = noise.percentile(layer, 0.999);
     std::printf("%-9s %14.5f %11.5f %14.5f %11.5f %7.2f %6.2f %12.0f\n", kLayerNames[l], t, tp, n, np,
-                n > 0 ? t / n : 0.0, np > 0 ? tp / np : 0.0, temporal.count(layer) / std::max(1, o.frames - 1));
+                n > 0 ? t / n : 0.0, np > 0 ? tp / np : 0.0,
+                temporal.count(layer) / std::max(1, o.frames - 1));
   }
   return 0;
 }

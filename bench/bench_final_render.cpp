@@ -152,7 +152,8 @@ int main(int argc, char** argv) {
     for (int k = 0; k < slices; ++k) {
       const int a = spp * k / slices, b = spp * (k + 1) / slices;
       const fs::path part = work / ("slice_" + std::to_string(k) + ".exr");
-      std::vector<std::string> args = {"--samples", std::to_string(a), std::to_string(b), "-o", part.string()};
+      std::vector<std::string> args = {"--samples", std::to_string(a), std::to_string(b), "-o",
+                                       part.string()};
       if (a > 0) args.insert(args.end(), {"--line-decisions", decisions.string()});
       split += run(render, with(args));
       merge_args.push_back(part.string());

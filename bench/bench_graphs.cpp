@@ -159,8 +159,10 @@ int main(int argc, char** argv) {
     instructions = program->code.size();
     registers = program->register_count;
   }
-  std::printf("\ncompile a %zu-node graph: median %.3f ms, max %.3f ms over %zu runs (%zu instructions, %d registers)\n",
-              big.nodes.size(), median(times), *std::max_element(times.begin(), times.end()), times.size(),
-              instructions, registers);
+  std::printf(
+      "\ncompile a %zu-node graph: median %.3f ms, max %.3f ms over %zu runs (%zu instructions, %d "
+      "registers)\n",
+      big.nodes.size(), median(times), *std::max_element(times.begin(), times.end()), times.size(),
+      instructions, registers);
   return 0;
 }

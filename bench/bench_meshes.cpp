@@ -44,7 +44,8 @@ TriangleMeshData million_triangles() {
   return TriangleMeshData{std::move(p), {}, {}, std::move(idx)};
 }
 
-template <class F> double median_ms(int runs, F&& f) {
+template <class F>
+double median_ms(int runs, F&& f) {
   std::vector<double> t;
   for (int r = 0; r < runs; ++r) {
     const auto start = std::chrono::steady_clock::now();

@@ -47,14 +47,20 @@ int main(int argc, char** argv) {
   bool all_qualities = true;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--spp" && i + 1 < argc) spp = std::atoi(argv[++i]);
-    else if (a == "--runs" && i + 1 < argc) runs = std::atoi(argv[++i]);
-    else if (a == "--threads" && i + 1 < argc) threads = std::atoi(argv[++i]);
-    else if (a == "--default-only") all_qualities = false;
+    if (a == "--spp" && i + 1 < argc)
+      spp = std::atoi(argv[++i]);
+    else if (a == "--runs" && i + 1 < argc)
+      runs = std::atoi(argv[++i]);
+    else if (a == "--threads" && i + 1 < argc)
+      threads = std::atoi(argv[++i]);
+    else if (a == "--default-only")
+      all_qualities = false;
     else if (a == "-h" || a == "--help") {
-      std::printf("usage: inkray-bench-outlines [SCENE.json] [--spp N] [--runs N] [--threads N] [--default-only]\n");
+      std::printf(
+          "usage: inkray-bench-outlines [SCENE.json] [--spp N] [--runs N] [--threads N] [--default-only]\n");
       return 0;
-    } else scene_file = a;
+    } else
+      scene_file = a;
   }
   const SceneLoadResult loaded = load_scene(scene_file);
   if (!loaded) {
@@ -62,8 +68,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   const SceneDesc base = *loaded.scene;
-  std::printf("%s, %dx%d, %d spp, median of %d runs\n", scene_file.c_str(), base.render.width, base.render.height,
-              spp, runs);
+  std::printf("%s, %dx%d, %d spp, median of %d runs\n", scene_file.c_str(), base.render.width,
+              base.render.height, spp, runs);
   std::printf("%-36s %12s %12s %10s\n", "configuration", "s/spp", "rays/path", "overhead");
 
   uint64_t rays = 0;

@@ -33,8 +33,8 @@ struct Options {
   int reference_spp = 8192;
   std::filesystem::path cache = "bench/cache";
   bool scaling = true;
-  bool denoise = false;         // --denoise: also the denoised image's error at every checkpoint
-  double adaptive = 0.0;        // --adaptive E: adaptive sampling at threshold E
+  bool denoise = false;   // --denoise: also the denoised image's error at every checkpoint
+  double adaptive = 0.0;  // --adaptive E: adaptive sampling at threshold E
 };
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -55,7 +55,8 @@ double rmse_linear(const RgbImage& a, const RgbImage& b) {
   double sum = 0.0;
   for (size_t i = 0; i < a.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) {
-      const double d = std::clamp(double(a.pixels[i][c]), 0.0, 1.0) - std::clamp(double(b.pixels[i][c]), 0.0, 1.0);
+      const double d =
+          std::clamp(double(a.pixels[i][c]), 0.0, 1.0) - std::clamp(double(b.pixels[i][c]), 0.0, 1.0);
       sum += d * d;
     }
   return std::sqrt(sum / double(3 * a.pixels.size()));
@@ -65,8 +66,8 @@ RgbImage reference_image(const Options& opt, const std::shared_ptr<const RenderS
   const auto& s = scene->settings;
   std::filesystem::create_directories(opt.cache);
   const auto file = opt.cache / (opt.scene.stem().string() + "-" + std::to_string(s.width) + "x" +
-                                 std::to_string(s.height) + "-" + std::to_string(opt.reference_spp) + "spp-seed" +
-                                 std::to_string(s.seed) + ".pfm");
+                                 std::to_string(s.height) + "-" + std::to_string(opt.reference_spp) +
+                                 "spp-seed" + std::to_string(s.seed) + ".pfm");
   RgbImage ref;
   std::string error;
   if (std::filesystem::exists(file) && read_pfm(file, &ref, &error)) {
@@ -107,10 +108,15 @@ double bare_embree_rate(const RenderScene& scene, int threads, double seconds) {
           const SurfaceInteraction si = scene.geometry.interaction(ray, hit);
           const Normal3 n = glm::dot(si.ng, ray.d) < 0.f ? si.ng : -si.ng;
           const Frame frame = Frame::from_z(n);
-          const Point3 target = scene.scene_center + 0.3f * scene.scene_radius * sample_uniform_sphere(sampler.get_pair(2 + 2 * uint32_t(depth)));
+          const Point3 target =
+              scene.scene_center +
+              0.3f * scene.scene_radius * sample_uniform_sphere(sampler.get_pair(2 + 2 * uint32_t(depth)));
           ++count;
-          scene.geometry.occluded(spawn_ray_to(si.p, si.p_error, n, target, Vec3(0.f), Vec3(0.f)), kShadowTMax);
-          ray = spawn_ray(si.p, si.p_error, n, frame.to_world(sample_cosine_hemisphere(sampler.get_pair(3 + 2 * uint32_t(depth)))));
+          scene.geometry.occluded(spawn_ray_to(si.p, si.p_error, n, target, Vec3(0.f), Vec3(0.f)),
+                                  kShadowTMax);
+          ray =
+              spawn_ray(si.p, si.p_error, n,
+                        frame.to_world(sample_cosine_hemisphere(sampler.get_pair(3 + 2 * uint32_t(depth)))));
         }
       }
       rays[size_t(worker)] += count;
@@ -176,7 +182,8 @@ int run(const Options& opt) {
     a.add(Aov::toon_band);
     edges.set_scene(compiled.scene, a);
     render_batch(edges, {16, 0.0});
-    const RgbImage id = edges.film().resolve_aov(Aov::object_id), band = edges.film().resolve_aov(Aov::toon_band);
+    const RgbImage id = edges.film().resolve_aov(Aov::object_id),
+                   band = edges.film().resolve_aov(Aov::toon_band);
     const int w = id.width, h = id.height;
     near_edge.assign(size_t(w) * size_t(h), 0);
     for (int y = 0; y < h; ++y)
@@ -207,15 +214,17 @@ int run(const Options& opt) {
     const RenderStats& s = session.stats();
     if (s.elapsed_seconds >= next_checkpoint || s.elapsed_seconds >= opt.seconds || session.converged()) {
       const RgbImage img = session.film().resolve();
-      std::printf("%10.2f %8.1f %12.3f %12.3f %14.5f %14.5f %12.5f", s.elapsed_seconds, double(s.paths) / pixels,
-                  double(s.paths) / s.elapsed_seconds * 1e-6, double(s.rays) / s.elapsed_seconds * 1e-6,
-                  rmse_display(img, reference), rmse_linear(img, reference), s.relative_error);
+      std::printf("%10.2f %8.1f %12.3f %12.3f %14.5f %14.5f %12.5f", s.elapsed_seconds,
+                  double(s.paths) / pixels, double(s.paths) / s.elapsed_seconds * 1e-6,
+                  double(s.rays) / s.elapsed_seconds * 1e-6, rmse_display(img, reference),
+                  rmse_linear(img, reference), s.relative_error);
       if (opt.denoise) {
         const auto t0 = Clock::now();
         const Denoised d = denoise(session.film(), &session.pool());
         const double denoise_seconds = seconds_since(t0);
-        std::printf(" %10.3f %14.5f %14.5f %12.5f %14.5f %14.5f", denoise_seconds, rmse_display(d.image, reference),
-                    rmse_linear(d.image, reference), d.relative_error, edge_rmse(img), edge_rmse(d.image));
+        std::printf(" %10.3f %14.5f %14.5f %12.5f %14.5f %14.5f", denoise_seconds,
+                    rmse_display(d.image, reference), rmse_linear(d.image, reference), d.relative_error,
+                    edge_rmse(img), edge_rmse(d.image));
       }
       std::printf("\n");
       std::fflush(stdout);
@@ -224,8 +233,8 @@ int run(const Options& opt) {
   }
   const RenderStats& s = session.stats();
   if (opt.adaptive > 0.0)
-    std::printf("adaptive sampling at %g: %u of %u tiles stopped, %.1f samples per pixel on average\n", opt.adaptive,
-                s.tiles - s.active_tiles, s.tiles, double(s.paths) / pixels);
+    std::printf("adaptive sampling at %g: %u of %u tiles stopped, %.1f samples per pixel on average\n",
+                opt.adaptive, s.tiles - s.active_tiles, s.tiles, double(s.paths) / pixels);
   if (opt.denoise) {
     // The median of five runs on the final film: one run is at the mercy of the machine.
     std::vector<double> times;
@@ -235,8 +244,8 @@ int run(const Options& opt) {
       times.push_back(seconds_since(t0));
     }
     std::sort(times.begin(), times.end());
-    std::printf("denoiser: median of 5 runs %.3f s for %.2f Mpixels on %d threads: %.3f s per Mpixel\n", times[2],
-                pixels * 1e-6, session.threads(), times[2] / (pixels * 1e-6));
+    std::printf("denoiser: median of 5 runs %.3f s for %.2f Mpixels on %d threads: %.3f s per Mpixel\n",
+                times[2], pixels * 1e-6, session.threads(), times[2] / (pixels * 1e-6));
   }
   const double full_rate = double(s.rays) / s.elapsed_seconds;
   const double bare_rate = bare_embree_rate(*compiled.scene, opt.threads, 3.0);
@@ -272,13 +281,20 @@ int main(int argc, char** argv) {
       }
       return argv[++i];
     };
-    if (a == "--time") opt.seconds = std::atof(next());
-    else if (a == "--threads") opt.threads = std::atoi(next());
-    else if (a == "--reference-spp") opt.reference_spp = std::atoi(next());
-    else if (a == "--cache") opt.cache = next();
-    else if (a == "--no-scaling") opt.scaling = false;
-    else if (a == "--denoise") opt.denoise = true;
-    else if (a == "--adaptive") opt.adaptive = std::atof(next());
+    if (a == "--time")
+      opt.seconds = std::atof(next());
+    else if (a == "--threads")
+      opt.threads = std::atoi(next());
+    else if (a == "--reference-spp")
+      opt.reference_spp = std::atoi(next());
+    else if (a == "--cache")
+      opt.cache = next();
+    else if (a == "--no-scaling")
+      opt.scaling = false;
+    else if (a == "--denoise")
+      opt.denoise = true;
+    else if (a == "--adaptive")
+      opt.adaptive = std::atof(next());
     else if (a == "-h" || a == "--help") {
       std::printf(
           "usage: inkray-bench [SCENE.json] [--time S] [--threads N] [--reference-spp N] [--cache DIR] "
@@ -287,7 +303,8 @@ int main(int argc, char** argv) {
     } else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "unknown option %s\n", a.c_str());
       return 2;
-    } else opt.scene = a;
+    } else
+      opt.scene = a;
   }
   if (opt.seconds <= 0.0 || opt.threads < 1 || opt.reference_spp < 1) {
     std::fprintf(stderr, "--time, --threads and --reference-spp must be positive\n");

@@ -33,12 +33,12 @@ using namespace inkray;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
-  int threads = 2;        // render threads
-  int build_threads = 0;  // stroke build threads; 0: one per hardware thread
-  int passes = 5;         // timed 1-spp passes per row (after one warm-up)
-  int repeats = 3;        // compiles per row; the median is reported
-  bool mesh = false;      // strokes on the torus knot instead of the sphere
-  bool big = true;        // a row of 150 big strokes after the counts
+  int threads = 2;                          // render threads
+  int build_threads = 0;                    // stroke build threads; 0: one per hardware thread
+  int passes = 5;                           // timed 1-spp passes per row (after one warm-up)
+  int repeats = 3;                          // compiles per row; the median is reported
+  bool mesh = false;                        // strokes on the torus knot instead of the sphere
+  bool big = true;                          // a row of 150 big strokes after the counts
   std::filesystem::path scenes = "scenes";  // where meshes/torus_knot.obj lives
   std::vector<int> counts = {0, 1000, 10000, 100000};
   std::string row;  // set in a row's own process: "N" strokes or "big"
@@ -126,7 +126,10 @@ CompileResult compile_or_exit(ThreadBudget& build, SceneCompiler& compiler, cons
   return c;
 }
 
-template <class T> size_t bytes_of(const std::vector<T>& v) { return v.capacity() * sizeof(T); }
+template <class T>
+size_t bytes_of(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
 
 struct StrokeMemory {
   size_t triangles = 0;
@@ -278,9 +281,10 @@ bool child_row(const Options& opt, const std::string& row, Row* out) {
 
 int run(const Options& opt) {
   ThreadBudget budget(opt.build_threads);
-  std::printf("strokes on a %s at 960x540; render threads %d, stroke build threads %d, compile median of %d, "
-              "render median of %d passes; each row in its own process\n\n",
-              opt.mesh ? "torus knot mesh" : "sphere", opt.threads, budget.size(), opt.repeats, opt.passes);
+  std::printf(
+      "strokes on a %s at 960x540; render threads %d, stroke build threads %d, compile median of %d, "
+      "render median of %d passes; each row in its own process\n\n",
+      opt.mesh ? "torus knot mesh" : "sphere", opt.threads, budget.size(), opt.repeats, opt.passes);
   std::printf("%8s %9s %7s %7s %7s %7s %9s %8s %10s %9s %8s %9s %8s %7s %8s\n", "strokes", "build ms",
               "brush", "place", "grow", "bvh", "recompile", "repaint", "triangles", "geom MiB", "BVH MiB",
               "strk MiB", "ms/spp", "ratio", "peak MiB");
@@ -334,14 +338,22 @@ bool apply_option(int argc, char** argv, int& i, Options& opt) {
   if (a == "--no-big") return !(opt.big = false);
   if (i + 1 >= argc) return false;
   const char* value = argv[++i];
-  if (a == "--threads") opt.threads = std::atoi(value);
-  else if (a == "--build-threads") opt.build_threads = std::atoi(value);
-  else if (a == "--passes") opt.passes = std::atoi(value);
-  else if (a == "--repeats") opt.repeats = std::atoi(value);
-  else if (a == "--scenes") opt.scenes = value;
-  else if (a == "--counts") opt.counts = parse_counts(value);
-  else if (a == "--row") opt.row = value;
-  else return false;
+  if (a == "--threads")
+    opt.threads = std::atoi(value);
+  else if (a == "--build-threads")
+    opt.build_threads = std::atoi(value);
+  else if (a == "--passes")
+    opt.passes = std::atoi(value);
+  else if (a == "--repeats")
+    opt.repeats = std::atoi(value);
+  else if (a == "--scenes")
+    opt.scenes = value;
+  else if (a == "--counts")
+    opt.counts = parse_counts(value);
+  else if (a == "--row")
+    opt.row = value;
+  else
+    return false;
   return true;
 }
 

@@ -9,8 +9,8 @@
 
 namespace inkray {
 
-bool Autosave::tick(const SceneDesc& scene, const std::filesystem::path& original, uint64_t revision, bool dirty,
-                    std::chrono::steady_clock::time_point now) {
+bool Autosave::tick(const SceneDesc& scene, const std::filesystem::path& original, uint64_t revision,
+                    bool dirty, std::chrono::steady_clock::time_point now) {
   if (last_ == std::chrono::steady_clock::time_point{}) last_ = now;
   if (!dirty || revision == written_revision_ || now - last_ < interval_) return false;
   last_ = now;

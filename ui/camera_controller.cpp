@@ -25,7 +25,8 @@ CameraDesc orbit(const CameraDesc& camera, float yaw, float pitch) {
   // Angles relative to up: elevation from the equator and azimuth around up.
   const float elevation = std::asin(std::clamp(glm::dot(dir, up), -1.f, 1.f));
   Vec3 flat = dir - up * glm::dot(dir, up);
-  if (glm::length(flat) < 1e-6f) flat = std::abs(up.x) < 0.9f ? glm::cross(up, Vec3(1, 0, 0)) : glm::cross(up, Vec3(0, 0, 1));
+  if (glm::length(flat) < 1e-6f)
+    flat = std::abs(up.x) < 0.9f ? glm::cross(up, Vec3(1, 0, 0)) : glm::cross(up, Vec3(0, 0, 1));
   flat = glm::normalize(flat);
   const Vec3 side = glm::normalize(glm::cross(up, flat));
   const float new_elevation = std::clamp(elevation + pitch, -kMaxPitch, kMaxPitch);

@@ -23,8 +23,8 @@ CameraDesc focus_at(const CameraDesc& camera, float distance);
 // Mouse input mapped to the functions above, with one sensitivity setting.
 struct CameraController {
   float orbit_radians_per_pixel = 0.008f;
-  float dolly_per_wheel_step = 0.85f;   // distance factor per wheel notch
-  float dolly_per_pixel = 0.005f;       // right drag: exp(dy * this)
+  float dolly_per_wheel_step = 0.85f;  // distance factor per wheel notch
+  float dolly_per_pixel = 0.005f;      // right drag: exp(dy * this)
 
   CameraDesc drag_orbit(const CameraDesc& c, float dx, float dy) const {
     return orbit(c, -dx * orbit_radians_per_pixel, -dy * orbit_radians_per_pixel);

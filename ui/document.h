@@ -50,8 +50,8 @@ class Document {
   bool open(const std::filesystem::path& file, std::vector<std::string>* errors,
             std::vector<std::string>* warnings = nullptr, std::vector<std::string>* missing_files = nullptr);
   // The same for a file already read (for editing) elsewhere, e.g. by a SceneLoader.
-  bool open_loaded(SceneLoadResult loaded, const std::filesystem::path& file, std::vector<std::string>* errors,
-                   std::vector<std::string>* warnings = nullptr,
+  bool open_loaded(SceneLoadResult loaded, const std::filesystem::path& file,
+                   std::vector<std::string>* errors, std::vector<std::string>* warnings = nullptr,
                    std::vector<std::string>* missing_files = nullptr);
   void reset(SceneDesc scene, std::filesystem::path file = {}, bool dirty = false);
   bool save(std::string* error);

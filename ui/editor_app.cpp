@@ -198,12 +198,21 @@ class InputScript {
 
   // GLFW key codes; ImGui 1.86 indexes its key array by them.
   static int key_code(const std::string& name) {
-    static const std::pair<const char*, int> kNamed[] = {
-        {"ctrl", GLFW_KEY_LEFT_CONTROL}, {"shift", GLFW_KEY_LEFT_SHIFT}, {"alt", GLFW_KEY_LEFT_ALT},
-        {"space", GLFW_KEY_SPACE},       {"left", GLFW_KEY_LEFT},        {"right", GLFW_KEY_RIGHT},
-        {"up", GLFW_KEY_UP},             {"down", GLFW_KEY_DOWN},        {"escape", GLFW_KEY_ESCAPE},
-        {"enter", GLFW_KEY_ENTER},       {"tab", GLFW_KEY_TAB},          {"backspace", GLFW_KEY_BACKSPACE},
-        {"delete", GLFW_KEY_DELETE},     {"home", GLFW_KEY_HOME},        {"end", GLFW_KEY_END}};
+    static const std::pair<const char*, int> kNamed[] = {{"ctrl", GLFW_KEY_LEFT_CONTROL},
+                                                         {"shift", GLFW_KEY_LEFT_SHIFT},
+                                                         {"alt", GLFW_KEY_LEFT_ALT},
+                                                         {"space", GLFW_KEY_SPACE},
+                                                         {"left", GLFW_KEY_LEFT},
+                                                         {"right", GLFW_KEY_RIGHT},
+                                                         {"up", GLFW_KEY_UP},
+                                                         {"down", GLFW_KEY_DOWN},
+                                                         {"escape", GLFW_KEY_ESCAPE},
+                                                         {"enter", GLFW_KEY_ENTER},
+                                                         {"tab", GLFW_KEY_TAB},
+                                                         {"backspace", GLFW_KEY_BACKSPACE},
+                                                         {"delete", GLFW_KEY_DELETE},
+                                                         {"home", GLFW_KEY_HOME},
+                                                         {"end", GLFW_KEY_END}};
     for (const auto& [n, code] : kNamed)
       if (name == n) return code;
     if (name.size() == 1 && std::isalnum(static_cast<unsigned char>(name[0])))
@@ -263,7 +272,8 @@ EditorApp::EditorApp(EditorOptions options)
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     if (!in.eof()) {
       // A test that cannot play its script must not pass on an editor that did nothing.
-      std::fprintf(stderr, "inkray: --input-script: cannot read %s\n", options_.input_script.string().c_str());
+      std::fprintf(stderr, "inkray: --input-script: cannot read %s\n",
+                   options_.input_script.string().c_str());
       std::exit(2);
     } else {
       script_ = std::make_unique<InputScript>(std::move(lines));
@@ -305,12 +315,18 @@ void EditorApp::run(Pending action, const std::filesystem::path& file) {
       break;
     case Pending::open_dialog:
       dialog_purpose_ = DialogPurpose::open;
-      file_dialog_.open("Open scene", FileDialog::Mode::open, {".json"},
-                        state_.document.file().empty() ? std::filesystem::current_path() : state_.document.file());
+      file_dialog_.open(
+          "Open scene", FileDialog::Mode::open, {".json"},
+          state_.document.file().empty() ? std::filesystem::current_path() : state_.document.file());
       break;
-    case Pending::open_file: open_file(file); break;
-    case Pending::quit: quit_ = true; break;
-    case Pending::none: break;
+    case Pending::open_file:
+      open_file(file);
+      break;
+    case Pending::quit:
+      quit_ = true;
+      break;
+    case Pending::none:
+      break;
   }
 }
 
@@ -337,7 +353,8 @@ void EditorApp::finish_open(const std::filesystem::path& file, SceneLoadResult l
   state_.region = {};
   recent_.add(file);
   state_.log.info("opened " + file.string());
-  for (const auto& w : warnings) state_.log.warning(w + " (the scene opens, but renders once this is mended)");
+  for (const auto& w : warnings)
+    state_.log.warning(w + " (the scene opens, but renders once this is mended)");
   for (const auto& m : missing) state_.log.warning(m + ": drawn as a placeholder until located");
 }
 
@@ -397,8 +414,10 @@ void EditorApp::menu_bar() {
   }
   if (ImGui::BeginMenu("Edit")) {
     const CommandStack& h = state_.document.history();
-    if (ImGui::MenuItem(("Undo " + h.undo_label()).c_str(), "Ctrl+Z", false, h.can_undo())) state_.document.undo(&state_.selection);
-    if (ImGui::MenuItem(("Redo " + h.redo_label()).c_str(), "Ctrl+Y", false, h.can_redo())) state_.document.redo(&state_.selection);
+    if (ImGui::MenuItem(("Undo " + h.undo_label()).c_str(), "Ctrl+Z", false, h.can_undo()))
+      state_.document.undo(&state_.selection);
+    if (ImGui::MenuItem(("Redo " + h.redo_label()).c_str(), "Ctrl+Y", false, h.can_redo()))
+      state_.document.redo(&state_.selection);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
@@ -446,7 +465,8 @@ void EditorApp::shortcuts() {
     if (ImGui::IsKeyPressed('N', false)) guarded(Pending::new_document);
     if (ImGui::IsKeyPressed('O', false)) guarded(Pending::open_dialog);
     if (ImGui::IsKeyPressed('S', false)) save(io.KeyShift);
-    if (ImGui::IsKeyPressed('Z', false)) io.KeyShift ? state_.document.redo(&state_.selection) : state_.document.undo(&state_.selection);
+    if (ImGui::IsKeyPressed('Z', false))
+      io.KeyShift ? state_.document.redo(&state_.selection) : state_.document.undo(&state_.selection);
     if (ImGui::IsKeyPressed('Y', false)) state_.document.redo(&state_.selection);
     if (ImGui::IsKeyPressed('D', false) && !nodes_have_keys) {
       SceneDesc s = state_.document.scene();
@@ -458,7 +478,8 @@ void EditorApp::shortcuts() {
     }
   } else if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false) && !nodes_have_keys) {
     SceneDesc s = state_.document.scene();
-    if (delete_item(s, state_.selection) && state_.edit_checked(std::move(s), "Delete")) state_.selection = {};
+    if (delete_item(s, state_.selection) && state_.edit_checked(std::move(s), "Delete"))
+      state_.selection = {};
   }
   // The frame, as in Blender: Space plays anywhere; the arrows step over the viewport and
   // the timeline (Shift: to the shot's ends; up and down: to the next and previous key).
@@ -548,10 +569,13 @@ void EditorApp::layout(float width, float height) {
   ImGui::End();
 }
 
-void EditorApp::set_ui_scale_setting(float scale) { settings_.ui_scale = std::clamp(scale, kMinUiScale, kMaxUiScale); }
+void EditorApp::set_ui_scale_setting(float scale) {
+  settings_.ui_scale = std::clamp(scale, kMinUiScale, kMaxUiScale);
+}
 
 void EditorApp::change_ui_scale(float factor) {
-  settings_.ui_scale = factor == 0.f ? 1.f : std::clamp(settings_.ui_scale * factor, kMinUiScale, kMaxUiScale);
+  settings_.ui_scale =
+      factor == 0.f ? 1.f : std::clamp(settings_.ui_scale * factor, kMinUiScale, kMaxUiScale);
   settings_changed_ = true;
 }
 
@@ -564,7 +588,9 @@ void EditorApp::handle_drops() {
   files.swap(dropped_);
   for (const auto& file : files) {
     switch (drop_kind(file)) {
-      case DropKind::scene: guarded(Pending::open_file, file); break;
+      case DropKind::scene:
+        guarded(Pending::open_file, file);
+        break;
       case DropKind::mesh: {
         SceneDesc s = state_.document.scene();
         const Selection added = add_mesh(s, file.string());
@@ -585,7 +611,8 @@ void EditorApp::handle_drops() {
             drop_problem_ = file.string() + ":\n" + why;
             break;
           }
-          state_.log.info("set " + file.string() + " on " + item_name(state_.document.scene(), state_.selection));
+          state_.log.info("set " + file.string() + " on " +
+                          item_name(state_.document.scene(), state_.selection));
         } else {
           state_.log.error(why);
           drop_problem_ = why;
@@ -593,7 +620,8 @@ void EditorApp::handle_drops() {
         break;
       }
       case DropKind::unknown:
-        drop_problem_ = file.string() + ": not a scene (.json), a mesh (.obj) or an image (.png, .jpg, .hdr, .tga, .bmp)";
+        drop_problem_ =
+            file.string() + ": not a scene (.json), a mesh (.obj) or an image (.png, .jpg, .hdr, .tga, .bmp)";
         state_.log.error(drop_problem_);
         break;
     }
@@ -604,7 +632,9 @@ void EditorApp::dialogs() {
   std::filesystem::path chosen;
   if (file_dialog_.draw(&chosen)) {
     switch (dialog_purpose_) {
-      case DialogPurpose::open: open_file(chosen); break;
+      case DialogPurpose::open:
+        open_file(chosen);
+        break;
       case DialogPurpose::save_as: {
         std::string error;
         if (state_.document.save_as(chosen, &error)) {
@@ -718,7 +748,8 @@ void EditorApp::sync_renderer() {
   const bool paused = state_.paused || export_ui_.wants_viewport_paused();
   if (first_sync_ || paused != sent_paused_) renderer_.set_paused(sent_paused_ = paused);
   const RegionRect& r = state_.region;
-  if (r.x0 != sent_region_.x0 || r.y0 != sent_region_.y0 || r.x1 != sent_region_.x1 || r.y1 != sent_region_.y1) {
+  if (r.x0 != sent_region_.x0 || r.y0 != sent_region_.y0 || r.x1 != sent_region_.x1 ||
+      r.y1 != sent_region_.y1) {
     renderer_.set_region(sent_region_ = r);
   }
   if (state_.document.revision() != submitted_doc_revision_) {
@@ -754,10 +785,11 @@ void EditorApp::poll_background() {
   if (auto s = renderer_.latest(); s && s->finished && s->revision != logged_finish_revision_) {
     logged_finish_revision_ = s->revision;
     char line[200];
-    std::snprintf(line, sizeof line, "viewport done: %u spp in %.2f s, %.2f Mrays/s, estimated error %.2f%%",
-                  s->stats.spp, s->stats.elapsed_seconds,
-                  s->stats.elapsed_seconds > 0 ? double(s->stats.rays) / s->stats.elapsed_seconds * 1e-6 : 0.0,
-                  s->stats.relative_error * 100.0);
+    std::snprintf(
+        line, sizeof line, "viewport done: %u spp in %.2f s, %.2f Mrays/s, estimated error %.2f%%",
+        s->stats.spp, s->stats.elapsed_seconds,
+        s->stats.elapsed_seconds > 0 ? double(s->stats.rays) / s->stats.elapsed_seconds * 1e-6 : 0.0,
+        s->stats.relative_error * 100.0);
     if (s->denoised)
       std::snprintf(line + std::strlen(line), sizeof line - std::strlen(line), " raw, %.2f%% denoised",
                     s->denoised_error * 100.0);
@@ -785,8 +817,9 @@ void EditorApp::frame(float window_width, float window_height) {
   if (state_.want_add_mesh) {
     state_.want_add_mesh = false;
     dialog_purpose_ = DialogPurpose::add_mesh;
-    const std::filesystem::path start =
-        state_.document.scene().base_dir.empty() ? std::filesystem::current_path() : state_.document.scene().base_dir;
+    const std::filesystem::path start = state_.document.scene().base_dir.empty()
+                                            ? std::filesystem::current_path()
+                                            : state_.document.scene().base_dir;
     file_dialog_.open("Add mesh", FileDialog::Mode::open, {".obj"}, start);
   }
   if (state_.want_node_editor) state_.want_node_editor = false, show_node_editor_ = true;

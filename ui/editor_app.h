@@ -135,9 +135,9 @@ class EditorApp {
   // Playback and the keys that move the frame (over the viewport or the timeline).
   PlaybackClock playback_;
   bool was_playing_ = false;
-  double played_frame_ = 0.0;           // the frame playback last set
-  RenderSettings played_range_;         // the range and rate it counts in
-  bool frames_hovered_ = false;         // the viewport or the timeline, last frame
+  double played_frame_ = 0.0;    // the frame playback last set
+  RenderSettings played_range_;  // the range and rate it counts in
+  bool frames_hovered_ = false;  // the viewport or the timeline, last frame
   std::unique_ptr<InputScript> script_;
 
   // What the renderer has been told, to send only changes.

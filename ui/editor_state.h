@@ -26,7 +26,7 @@ struct EditorState {
   ViewportLimits limits{0, 0.0, 0.0};
   RegionRect region;
   bool paused = false;
-  CameraDesc home_camera;  // "Reset camera" returns here: the camera the document opened with
+  CameraDesc home_camera;    // "Reset camera" returns here: the camera the document opened with
   bool region_tool = false;  // left drag in the viewport draws a render region instead of orbiting
   // Why the newest document cannot render (an unset file, a dangling name), shown over
   // the viewport until a document that renders replaces it.
@@ -35,7 +35,7 @@ struct EditorState {
   // beside the field it names until that item is edited again.
   Selection problem_item;
   std::string problem_param, problem_message;
-  bool uniform_scale = false;  // the object transform's scale lock
+  bool uniform_scale = false;            // the object transform's scale lock
   MaterialSwatches* swatches = nullptr;  // the app's material previews; null without a GL context (tests)
   // The app's exports (ui/export_queue.h), for the render panel's status; null until drawn.
   ExportQueue* exports = nullptr;

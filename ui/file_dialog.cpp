@@ -97,8 +97,8 @@ bool FileDialog::draw(std::filesystem::path* chosen) {
     ImGui::CloseCurrentPopup();
   }
   if (confirmed && !name_.empty()) {
-    std::filesystem::path file = std::filesystem::path(name_).is_absolute() ? std::filesystem::path(name_)
-                                                                            : directory_ / name_;
+    std::filesystem::path file =
+        std::filesystem::path(name_).is_absolute() ? std::filesystem::path(name_) : directory_ / name_;
     if (mode_ == Mode::save && file.extension().empty() && !extensions_.empty()) file += extensions_.front();
     *chosen = file;
     open_ = false;

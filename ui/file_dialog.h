@@ -13,7 +13,8 @@ class FileDialog {
   enum class Mode { open, save };
 
   // `extensions` like {".json"}; empty shows every file.
-  void open(std::string title, Mode mode, std::vector<std::string> extensions, const std::filesystem::path& start);
+  void open(std::string title, Mode mode, std::vector<std::string> extensions,
+            const std::filesystem::path& start);
   bool is_open() const { return open_; }
   // Draws the dialog; true on the frame the user confirms, with the chosen file.
   bool draw(std::filesystem::path* chosen);

@@ -50,7 +50,8 @@ DropKind drop_kind(const std::filesystem::path& file) {
   return DropKind::unknown;
 }
 
-bool drop_image_on(SceneDesc& scene, const Selection& selection, const std::filesystem::path& image, std::string* why) {
+bool drop_image_on(SceneDesc& scene, const Selection& selection, const std::filesystem::path& image,
+                   std::string* why) {
   std::string reason;
   const std::string path = path_in_scene(image, scene.base_dir);
   bool done = false;
@@ -73,7 +74,8 @@ bool drop_image_on(SceneDesc& scene, const Selection& selection, const std::file
     emitter.brush_image = path;
     done = true;
   } else {
-    reason = "a " + item_name(scene, selection) + " cannot take an image; select a material, an object or a stroke emitter";
+    reason = "a " + item_name(scene, selection) +
+             " cannot take an image; select a material, an object or a stroke emitter";
   }
   if (!done && why) *why = image.string() + ": " + reason;
   return done;

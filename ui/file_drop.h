@@ -16,6 +16,7 @@ DropKind drop_kind(const std::filesystem::path& file);
 
 // Sets the dropped image on the selection; false with *why (naming the file and what
 // the selection can take) when it cannot, leaving the scene unchanged.
-bool drop_image_on(SceneDesc& scene, const Selection& selection, const std::filesystem::path& image, std::string* why);
+bool drop_image_on(SceneDesc& scene, const Selection& selection, const std::filesystem::path& image,
+                   std::string* why);
 
 }  // namespace inkray

@@ -12,7 +12,8 @@ constexpr float kBaseFontPixels = 15.f;
 
 // Latin and Latin-1, general punctuation (dashes, ellipsis), arrows, maths operators and
 // geometric shapes: what labels, units and node titles use.
-constexpr ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x2000, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
+constexpr ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x2000, 0x206F, 0x2190, 0x21FF,
+                                    0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
 
 }  // namespace
 

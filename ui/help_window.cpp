@@ -28,8 +28,9 @@ constexpr Shortcut kDocument[] = {
     {"Delete", "Delete the selection"},
     {"Ctrl+= / Ctrl+- / Ctrl+0", "Larger / smaller / default UI scale"},
     {"F1", "This window"},
-    {"Drop a file on the window", ".json opens it, .obj imports it (fitted to the view), an image becomes the "
-                                  "selected material's texture (or the selected emitter's brush)"},
+    {"Drop a file on the window",
+     ".json opens it, .obj imports it (fitted to the view), an image becomes the "
+     "selected material's texture (or the selected emitter's brush)"},
 };
 
 constexpr Shortcut kViewport[] = {
@@ -39,11 +40,13 @@ constexpr Shortcut kViewport[] = {
     {"Click", "Select the object under the cursor"},
     {"Ctrl+click", "Focus the camera at the point under the cursor"},
     {"F", "Frame the selection (or the scene)"},
-    {"Gizmo handles", "Drag an arrow, a plane square, a ring or the centre to move, rotate or scale the "
-                      "selection; Ctrl snaps, Esc cancels; each drag is one undo step"},
+    {"Gizmo handles",
+     "Drag an arrow, a plane square, a ring or the centre to move, rotate or scale the "
+     "selection; Ctrl snaps, Esc cancels; each drag is one undo step"},
     {"W", "Cycle the gizmo: move, rotate, scale"},
-    {"G / R / S", "Move / rotate / scale with the mouse; X, Y, Z constrain to an axis (again: free), digits "
-                  "type the value ('-' negates), Ctrl snaps, click or Enter confirms, right click or Esc cancels"},
+    {"G / R / S",
+     "Move / rotate / scale with the mouse; X, Y, Z constrain to an axis (again: free), digits "
+     "type the value ('-' negates), Ctrl snaps, click or Enter confirms, right click or Esc cancels"},
     {"I", "Show or hide the statistics overlay (over a field, I keys it)"},
 };
 
@@ -56,8 +59,9 @@ constexpr Shortcut kTimeline[] = {
     {"I", "Key the field under the mouse at the current frame (or the one being edited)"},
     {"Alt+I", "Delete that field's key at the current frame"},
     {"Right click a field", "Insert key, delete key, clear all its keys"},
-    {"Edit an animated field", "Keys it at the current frame (a yellow diamond: a key here; green: "
-                               "animated, no key here)"},
+    {"Edit an animated field",
+     "Keys it at the current frame (a yellow diamond: a key here; green: "
+     "animated, no key here)"},
 };
 
 constexpr Shortcut kNodes[] = {
@@ -87,7 +91,8 @@ void HelpWindow::draw() {
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::Begin("Shortcuts and help", &shortcuts_open_)) {
       ImGui::TextWrapped(
-          "Sliders: drag to change, Ctrl+click to type a value beyond the slider's range. Hover a field to read "
+          "Sliders: drag to change, Ctrl+click to type a value beyond the slider's range. Hover a field to "
+          "read "
           "what it does and its key in the scene file. The scene format and every node are described in "
           "docs/scene-format.md; the README explains the editor.");
       for (const ShortcutGroup& group : kGroups) {
@@ -117,10 +122,11 @@ void HelpWindow::draw() {
           "A path tracer for non-photorealistic rendering: toon outlines, cel shading and painterly strokes "
           "computed inside a physically based renderer, so lines show in mirrors and through glass.");
       ImGui::Separator();
-      ImGui::TextWrapped("Built with Dear ImGui %s, GLFW, Embree 3, oneTBB, GLM, tinyobjloader, nlohmann_json "
-                         "and stb. The interface font is DejaVu Sans (Bitstream Vera licence, "
-                         "resources/fonts/DejaVu-LICENSE.txt).",
-                         IMGUI_VERSION);
+      ImGui::TextWrapped(
+          "Built with Dear ImGui %s, GLFW, Embree 3, oneTBB, GLM, tinyobjloader, nlohmann_json "
+          "and stb. The interface font is DejaVu Sans (Bitstream Vera licence, "
+          "resources/fonts/DejaVu-LICENSE.txt).",
+          IMGUI_VERSION);
     }
     ImGui::End();
   }

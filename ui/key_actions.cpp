@@ -41,7 +41,8 @@ void apply_key_actions(EditorState& state, KeyTargets& keys) {
     case Action::clear:
       if (clear_keys(scene, path)) state.edit(std::move(scene), "Clear keys");
       break;
-    case Action::none: break;
+    case Action::none:
+      break;
   }
 }
 

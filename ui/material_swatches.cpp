@@ -91,7 +91,8 @@ void MaterialSwatches::update(const SceneDesc& doc, bool hold) {
   };
   if (!rendering_.empty()) {
     std::string key;
-    if (names.count(rendering_) && stale(rendering_, &key) && key == rendering_key_) return;  // still refining
+    if (names.count(rendering_) && stale(rendering_, &key) && key == rendering_key_)
+      return;  // still refining
   }
   if (!wanted_.empty() && names.count(wanted_) && stale(wanted_, &next_key)) next = wanted_;
   for (const MaterialDesc& m : doc.materials) {

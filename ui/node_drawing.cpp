@@ -23,12 +23,14 @@ ImVec2 im(Vec2 v) { return ImVec2(v.x, v.y); }
 void canvas_text(ImDrawList* draw, float zoom, ImVec2 at, ImU32 color, std::string_view text,
                  const ImVec4* clip) {
   ImFont* font = ImGui::GetFont();
-  draw->AddText(font, NodeMetrics{}.text * zoom, at, color, text.data(), text.data() + text.size(), 0.f, clip);
+  draw->AddText(font, NodeMetrics{}.text * zoom, at, color, text.data(), text.data() + text.size(), 0.f,
+                clip);
 }
 
 float canvas_text_width(float zoom, std::string_view text) {
   ImFont* font = ImGui::GetFont();
-  return font->CalcTextSizeA(NodeMetrics{}.text * zoom, FLT_MAX, 0.f, text.data(), text.data() + text.size()).x;
+  return font->CalcTextSizeA(NodeMetrics{}.text * zoom, FLT_MAX, 0.f, text.data(), text.data() + text.size())
+      .x;
 }
 
 // A colour as a bar the width of a widget, opening a picker: ImGui's ColorEdit3 squeezes
@@ -98,14 +100,16 @@ struct RowWidgets {
     if constexpr (std::is_same_v<F, Vec3>) {
       if (p.kind == ParamKind::color) {
         if (color_bar(p, field, width)) bar_changed = true, bar_param = p.name;
-        generated.key_marks(p, top.x + width - 0.5f * ImGui::GetFrameHeight());  // in the bar: the label fills the row
+        generated.key_marks(
+            p, top.x + width - 0.5f * ImGui::GetFrameHeight());  // in the bar: the label fills the row
       } else {
         generated(p, field);
       }
     } else if constexpr (std::is_same_v<F, ColorInput>) {
       if (Color* constant = std::get_if<Color>(&field)) {
         if (color_bar(p, *constant, width)) bar_changed = true, bar_param = p.name;
-        generated.key_marks(p, top.x + width - 0.5f * ImGui::GetFrameHeight());  // in the bar: the label fills the row
+        generated.key_marks(
+            p, top.x + width - 0.5f * ImGui::GetFrameHeight());  // in the bar: the label fills the row
       } else {
         generated(p, field);  // a texture object kept from a plain material: its own widgets
       }

@@ -18,12 +18,18 @@ float finite_or(float v, float fallback) { return std::isfinite(v) ? v : fallbac
 
 const PanelRect& PanelRects::operator[](Panel p) const {
   switch (p) {
-    case Panel::scene: return scene;
-    case Panel::viewport: return viewport;
-    case Panel::output: return output;
-    case Panel::properties: return properties;
-    case Panel::node_editor: return node_editor;
-    case Panel::timeline: return timeline;
+    case Panel::scene:
+      return scene;
+    case Panel::viewport:
+      return viewport;
+    case Panel::output:
+      return output;
+    case Panel::properties:
+      return properties;
+    case Panel::node_editor:
+      return node_editor;
+    case Panel::timeline:
+      return timeline;
   }
   return scene;
 }
@@ -70,8 +76,8 @@ PanelRects place_panels(const PanelLayout& stored, float width, float height, fl
   // The split is the viewport's and the timeline's share together.
   const float viewport_h = std::floor(
       std::min(std::max(body * l.node_split, kMinViewportHeight * scale * 0.75f + timeline_h), body * 0.85f));
-  const float bottom_h =
-      std::floor(std::clamp(l.output_height * scale, kMinBottom * scale, std::max(body * 0.6f, kMinBottom * scale)));
+  const float bottom_h = std::floor(
+      std::clamp(l.output_height * scale, kMinBottom * scale, std::max(body * 0.6f, kMinBottom * scale)));
   r.scene = {0, top, scene_w, viewport_h};
   r.viewport = {scene_w, top, centre_w, std::max(viewport_h - timeline_h, 1.f)};
   r.timeline = {scene_w, top + r.viewport.h, centre_w, timeline_h};
@@ -81,8 +87,8 @@ PanelRects place_panels(const PanelLayout& stored, float width, float height, fl
   return r;
 }
 
-PanelLayout resized(const PanelLayout& layout, Panel panel, const PanelRects& placed, const PanelRect& dragged,
-                    float scale, bool node_editor_open) {
+PanelLayout resized(const PanelLayout& layout, Panel panel, const PanelRects& placed,
+                    const PanelRect& dragged, float scale, bool node_editor_open) {
   // Sizes restart from what is on screen (the stored ones may have been squeezed to fit).
   PanelLayout l = layout;
   const float s = std::max(scale, 0.1f);

@@ -37,8 +37,8 @@ PanelRects place_panels(const PanelLayout& layout, float width, float height, fl
 // After the user dragged an edge of `panel` so that ImGui reports it at `dragged`, the
 // layout that reproduces it. Only edges shared with another panel count; outer edges
 // snap back.
-PanelLayout resized(const PanelLayout& layout, Panel panel, const PanelRects& placed, const PanelRect& dragged,
-                    float scale, bool node_editor_open);
+PanelLayout resized(const PanelLayout& layout, Panel panel, const PanelRects& placed,
+                    const PanelRect& dragged, float scale, bool node_editor_open);
 
 // Keeps stored sizes sane (positive, finite, within generous bounds).
 PanelLayout sanitized(PanelLayout layout);

@@ -24,7 +24,7 @@ namespace inkray {
 // frame), and what the user asked this frame, which the panel turns into edits.
 struct KeyTargets {
   const SceneDesc* document = nullptr;
-  bool report = false;  // each keyable field reports itself as "param:PATH" (widget_report.h)
+  bool report = false;           // each keyable field reports itself as "param:PATH" (widget_report.h)
   std::string hovered, focused;  // the keyable parameters under the mouse and with the focus, this frame
   enum class Action { none, insert, remove, clear } action = Action::none;
   std::string action_path;  // the parameter of a right-click menu's choice
@@ -33,7 +33,7 @@ struct KeyTargets {
 // A key mark: filled when a key is on this frame, outlined when the parameter is
 // animated without one here (the timeline draws its keys with it too).
 void draw_key_diamond(ImDrawList* draw, float x, float y, float radius, unsigned fill, unsigned outline);
-inline constexpr unsigned kKeyFill = 0xFF28C8FFu;      // yellow (ImGui colours are ABGR)
+inline constexpr unsigned kKeyFill = 0xFF28C8FFu;       // yellow (ImGui colours are ABGR)
 inline constexpr unsigned kAnimatedMark = 0xFF5AC86Eu;  // green
 
 struct ParamWidgets {

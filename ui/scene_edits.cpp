@@ -23,11 +23,16 @@ bool name_taken(const std::vector<T>& items, std::string_view name) {
 
 bool name_taken(const SceneDesc& scene, ItemKind kind, std::string_view name) {
   switch (kind) {
-    case ItemKind::object: return name_taken(scene.objects, name);
-    case ItemKind::light: return name_taken(scene.lights, name);
-    case ItemKind::material: return name_taken(scene.materials, name);
-    case ItemKind::emitter: return name_taken(scene.strokes, name);
-    default: return false;
+    case ItemKind::object:
+      return name_taken(scene.objects, name);
+    case ItemKind::light:
+      return name_taken(scene.lights, name);
+    case ItemKind::material:
+      return name_taken(scene.materials, name);
+    case ItemKind::emitter:
+      return name_taken(scene.strokes, name);
+    default:
+      return false;
   }
 }
 
@@ -52,11 +57,16 @@ Selection add_object(SceneDesc& scene, std::string_view base, ShapeVariant shape
 // The section of the document a named item is listed in, as animation paths name it.
 std::string_view section_of(ItemKind kind) {
   switch (kind) {
-    case ItemKind::object: return "objects";
-    case ItemKind::light: return "lights";
-    case ItemKind::material: return "materials";
-    case ItemKind::emitter: return "strokes";
-    default: return {};
+    case ItemKind::object:
+      return "objects";
+    case ItemKind::light:
+      return "lights";
+    case ItemKind::material:
+      return "materials";
+    case ItemKind::emitter:
+      return "strokes";
+    default:
+      return {};
   }
 }
 
@@ -97,7 +107,8 @@ Selection add_shape(SceneDesc& scene, NewShape shape) {
   TransformDesc transform;
   transform.translate = at.center;
   switch (shape) {
-    case NewShape::sphere: return add_object(scene, "sphere", SphereDesc{Point3(0.f), r}, transform);
+    case NewShape::sphere:
+      return add_object(scene, "sphere", SphereDesc{Point3(0.f), r}, transform);
     case NewShape::quad: {
       const float h = r / std::sqrt(2.f);
       const QuadDesc quad{Point3(-h, 0.f, h), Vec3(2.f * h, 0.f, 0.f), Vec3(0.f, 0.f, -2.f * h)};
@@ -170,11 +181,16 @@ Selection add_material(SceneDesc& scene) {
 Selection duplicate_item(SceneDesc& scene, const Selection& item) {
   if (!is_valid(scene, item)) return {};
   switch (item.kind) {
-    case ItemKind::object: return duplicate_in(scene, scene.objects, item.kind, item.index);
-    case ItemKind::light: return duplicate_in(scene, scene.lights, item.kind, item.index);
-    case ItemKind::material: return duplicate_in(scene, scene.materials, item.kind, item.index);
-    case ItemKind::emitter: return duplicate_in(scene, scene.strokes, item.kind, item.index);
-    default: return {};
+    case ItemKind::object:
+      return duplicate_in(scene, scene.objects, item.kind, item.index);
+    case ItemKind::light:
+      return duplicate_in(scene, scene.lights, item.kind, item.index);
+    case ItemKind::material:
+      return duplicate_in(scene, scene.materials, item.kind, item.index);
+    case ItemKind::emitter:
+      return duplicate_in(scene, scene.strokes, item.kind, item.index);
+    default:
+      return {};
   }
 }
 
@@ -190,8 +206,12 @@ bool delete_item(SceneDesc& scene, const Selection& item) {
       std::erase_if(scene.strokes, [&](const StrokeEmitterDesc& e) { return e.object == name; });
       break;
     }
-    case ItemKind::light: scene.lights.erase(scene.lights.begin() + item.index); break;
-    case ItemKind::emitter: scene.strokes.erase(scene.strokes.begin() + item.index); break;
+    case ItemKind::light:
+      scene.lights.erase(scene.lights.begin() + item.index);
+      break;
+    case ItemKind::emitter:
+      scene.strokes.erase(scene.strokes.begin() + item.index);
+      break;
     case ItemKind::material: {
       const std::string& name = scene.materials[size_t(item.index)].name;
       const bool used = std::any_of(scene.objects.begin(), scene.objects.end(),
@@ -200,7 +220,8 @@ bool delete_item(SceneDesc& scene, const Selection& item) {
       scene.materials.erase(scene.materials.begin() + item.index);
       break;
     }
-    default: return false;
+    default:
+      return false;
   }
   delete_tracks(scene, tracks);
   return true;
@@ -233,9 +254,14 @@ bool rename_item(SceneDesc& scene, const Selection& item, const std::string& nam
       old = name;
       return true;
     }
-    case ItemKind::light: scene.lights[size_t(item.index)].name = name; return true;
-    case ItemKind::emitter: scene.strokes[size_t(item.index)].name = name; return true;
-    default: return false;
+    case ItemKind::light:
+      scene.lights[size_t(item.index)].name = name;
+      return true;
+    case ItemKind::emitter:
+      scene.strokes[size_t(item.index)].name = name;
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -243,15 +269,32 @@ std::string key_path(const SceneDesc& scene, const Selection& item, std::string_
   if (!is_valid(scene, item)) return {};
   std::string path;
   switch (item.kind) {
-    case ItemKind::camera: path = "camera/"; break;
-    case ItemKind::render: path = "render/"; break;
-    case ItemKind::environment: path = "environment/"; break;
-    case ItemKind::outlines: path = "outlines/"; break;
-    case ItemKind::object: path = entry_path("objects", scene.objects[size_t(item.index)].name); break;
-    case ItemKind::light: path = entry_path("lights", scene.lights[size_t(item.index)].name); break;
-    case ItemKind::material: path = entry_path("materials", scene.materials[size_t(item.index)].name); break;
-    case ItemKind::emitter: path = entry_path("strokes", scene.strokes[size_t(item.index)].name); break;
-    case ItemKind::none: return {};
+    case ItemKind::camera:
+      path = "camera/";
+      break;
+    case ItemKind::render:
+      path = "render/";
+      break;
+    case ItemKind::environment:
+      path = "environment/";
+      break;
+    case ItemKind::outlines:
+      path = "outlines/";
+      break;
+    case ItemKind::object:
+      path = entry_path("objects", scene.objects[size_t(item.index)].name);
+      break;
+    case ItemKind::light:
+      path = entry_path("lights", scene.lights[size_t(item.index)].name);
+      break;
+    case ItemKind::material:
+      path = entry_path("materials", scene.materials[size_t(item.index)].name);
+      break;
+    case ItemKind::emitter:
+      path = entry_path("strokes", scene.strokes[size_t(item.index)].name);
+      break;
+    case ItemKind::none:
+      return {};
   }
   for (char c : param) path += c == '.' ? '/' : c;
   return path;

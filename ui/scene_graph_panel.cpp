@@ -87,7 +87,8 @@ void add_menu(EditorState& state) {
   if (ImGui::MenuItem("Box"))
     apply_structural(state, "Add box", [](SceneDesc& s) { return add_shape(s, NewShape::box); });
   if (ImGui::MenuItem("Mesh from OBJ...")) state.want_add_mesh = true, state.add_mesh_native_size = false;
-  if (ImGui::MenuItem("Mesh from OBJ, native size...")) state.want_add_mesh = true, state.add_mesh_native_size = true;
+  if (ImGui::MenuItem("Mesh from OBJ, native size..."))
+    state.want_add_mesh = true, state.add_mesh_native_size = true;
   ImGui::Separator();
   if (ImGui::MenuItem("Point light"))
     apply_structural(state, "Add light", [](SceneDesc& s) { return add_point_light(s); });

@@ -39,7 +39,8 @@ UiSettings read_ui_settings(const std::filesystem::path& file, std::vector<std::
     std::string key;
     float value = 0.f;
     words >> key;
-    const auto field = std::find_if(std::begin(kFields), std::end(kFields), [&](const Field& f) { return key == f.key; });
+    const auto field =
+        std::find_if(std::begin(kFields), std::end(kFields), [&](const Field& f) { return key == f.key; });
     const std::string where = file.string() + ":" + std::to_string(number) + ": ";
     if (field == std::end(kFields)) {
       if (problems) problems->push_back(where + "unknown setting \"" + key + "\"");

@@ -94,11 +94,11 @@ void draw_stats_overlay(const ViewportSnapshot& s, float x, float y) {
                 s.divisor > 1 ? "preview 1/" : "", st.spp, st.passes, st.elapsed_seconds, rays_per_s * 1e-6,
                 st.relative_error * 100.0, s.finished ? "  (done)" : "");
   if (s.denoised)
-    std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text), "\ndenoised at %u spp: error %.2f%%",
-                  s.denoised_spp, s.denoised_error * 100.0);
+    std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text),
+                  "\ndenoised at %u spp: error %.2f%%", s.denoised_spp, s.denoised_error * 100.0);
   if (st.tiles > 0 && st.active_tiles < st.tiles)
-    std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text), "\nadaptive: %u of %u tiles sampling",
-                  st.active_tiles, st.tiles);
+    std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text),
+                  "\nadaptive: %u of %u tiles sampling", st.active_tiles, st.tiles);
   if (s.divisor > 1) {
     std::snprintf(text, sizeof text, "preview 1/%d  %.1f s", s.divisor, st.elapsed_seconds);
   }
@@ -106,7 +106,8 @@ void draw_stats_overlay(const ViewportSnapshot& s, float x, float y) {
   const ImVec2 size = ImGui::CalcTextSize(text);
   const float width = std::max(size.x, 180.f * ui_scale_of_font());  // narrow: the image matters more
   const bool plot = s.error_curve.size() >= 2;
-  const float plot_h = plot ? kErrorPlotHeight * ui_scale_of_font() + 6.f + 2.f * ImGui::GetTextLineHeight() : 0.f;
+  const float plot_h =
+      plot ? kErrorPlotHeight * ui_scale_of_font() + 6.f + 2.f * ImGui::GetTextLineHeight() : 0.f;
   draw->AddRectFilled(ImVec2(x + 6, y + 6), ImVec2(x + 14 + width, y + 16 + size.y + plot_h),
                       IM_COL32(0, 0, 0, 150), 4.f);
   draw->AddText(ImVec2(x + 10, y + 10), IM_COL32(235, 235, 235, 255), text);

@@ -116,7 +116,8 @@ void ViewportPanel::toolbar(EditorState& state) {
   flow.next(checkbox_width("Denoise"));
   ImGui::Checkbox("Denoise", &state.view.denoise);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Denoise the final image (lines, ids and toon bands stay crisp); the samples so far stay");
+    ImGui::SetTooltip(
+        "Denoise the final image (lines, ids and toon bands stay crisp); the samples so far stay");
   widget_report::item("viewport.denoise");
   const char* pause = state.paused ? "Resume" : "Pause";
   flow.next(button_width(pause));
@@ -263,8 +264,7 @@ bool ViewportPanel::gizmo_input(EditorState& state, const ViewMapping& view, int
   }
   // Drawn from the document as edited this frame, so the gizmo stays under the mouse.
   draw_gizmo(ImGui::GetWindowDrawList(),
-             gizmo_frame(state.shown().objects[size_t(object)], gizmo_mode_, view), gizmo_mode_,
-             view, hot);
+             gizmo_frame(state.shown().objects[size_t(object)], gizmo_mode_, view), gizmo_mode_, view, hot);
   return gizmo_drag_.has_value();
 }
 

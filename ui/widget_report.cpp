@@ -33,8 +33,9 @@ std::string text() {
   std::string out;
   char line[512];
   for (const auto& [name, e] : g_entries) {
-    std::snprintf(line, sizeof line, "%s %.1f %.1f %.1f %.1f %.1f %.1f %.1f %.1f\n", name.c_str(), e.min.x, e.min.y,
-                  e.max.x, e.max.y, e.visible_min.x, e.visible_min.y, e.visible_max.x, e.visible_max.y);
+    std::snprintf(line, sizeof line, "%s %.1f %.1f %.1f %.1f %.1f %.1f %.1f %.1f\n", name.c_str(), e.min.x,
+                  e.min.y, e.max.x, e.max.y, e.visible_min.x, e.visible_min.y, e.visible_max.x,
+                  e.visible_max.y);
     out += line;
   }
   return out;

@@ -42,7 +42,10 @@ class ThreadBudget {
 
   // Runs f inside the arena and returns its result: parallel work f starts (a
   // scene compile's stroke build, Embree's BVH build) stays within the budget.
-  template <class F> decltype(auto) run(F&& f) { return arena_.execute(std::forward<F>(f)); }
+  template <class F>
+  decltype(auto) run(F&& f) {
+    return arena_.execute(std::forward<F>(f));
+  }
 
  private:
   int size_;

@@ -68,13 +68,16 @@ Camera::View Camera::view_at(float time) const {
   return make_view(now);
 }
 
-Ray Camera::moving_ray(Vec2 film, Vec2 lens, float time) const { return ray_from(view_at(time), film, lens, time); }
+Ray Camera::moving_ray(Vec2 film, Vec2 lens, float time) const {
+  return ray_from(view_at(time), film, lens, time);
+}
 
 bool Camera::project(const Point3& p, Vec2* film) const {
   const Vec3 d = p - view_.origin;
   const float z = glm::dot(d, view_.w);
   if (z <= 0.f) return false;
-  const float sx = glm::dot(d, view_.u) / z / view_.half_width, sy = glm::dot(d, view_.v) / z / view_.half_height;
+  const float sx = glm::dot(d, view_.u) / z / view_.half_width,
+              sy = glm::dot(d, view_.v) / z / view_.half_height;
   *film = {(sx + 1.f) * 0.5f * width_, (1.f - sy) * 0.5f * height_};
   return true;
 }

@@ -71,12 +71,15 @@ std::optional<std::string> AssetCache::failure(const std::filesystem::path& file
   return error;
 }
 
-std::shared_ptr<const RgbImage> AssetCache::image(const std::filesystem::path& file, bool srgb, std::string* error) {
+std::shared_ptr<const RgbImage> AssetCache::image(const std::filesystem::path& file, bool srgb,
+                                                  std::string* error) {
   const auto stamp = file_stamp(file);
   const std::string key = "image|" + (stamp ? *stamp : file.string()) + (srgb ? "|srgb" : "|linear");
   if (stamp)
     if (auto found = find<RgbImage>(key)) return found;
-  const auto unreadable = [&]() -> std::shared_ptr<const RgbImage> { return stand_ins_ ? stand_in_image() : nullptr; };
+  const auto unreadable = [&]() -> std::shared_ptr<const RgbImage> {
+    return stand_ins_ ? stand_in_image() : nullptr;
+  };
   if (failed_before(stamp, error)) return unreadable();
   note_read(file);
   RgbImage image;
@@ -89,7 +92,7 @@ std::shared_ptr<const RgbImage> AssetCache::image(const std::filesystem::path& f
 }
 
 std::shared_ptr<const std::vector<float>> AssetCache::image_alpha(const std::filesystem::path& file,
-                                                                std::string* error) {
+                                                                  std::string* error) {
   const auto stamp = file_stamp(file);
   const std::string key = "image alpha|" + (stamp ? *stamp : file.string());
   if (stamp)
@@ -120,7 +123,8 @@ std::optional<ImageSize> AssetCache::image_size(const std::filesystem::path& fil
   return size;
 }
 
-std::shared_ptr<const TriangleMeshData> AssetCache::mesh(const std::filesystem::path& file, std::string* error) {
+std::shared_ptr<const TriangleMeshData> AssetCache::mesh(const std::filesystem::path& file,
+                                                         std::string* error) {
   const auto stamp = file_stamp(file);
   const std::string key = "mesh|" + (stamp ? *stamp : file.string());
   if (stamp)
@@ -136,7 +140,8 @@ std::shared_ptr<const TriangleMeshData> AssetCache::mesh(const std::filesystem::
   return stamp ? keep(key, std::move(value)) : value;
 }
 
-std::shared_ptr<const AlphaMask> AssetCache::brush(const StrokeEmitterDesc& e, const std::filesystem::path& base_dir,
+std::shared_ptr<const AlphaMask> AssetCache::brush(const StrokeEmitterDesc& e,
+                                                   const std::filesystem::path& base_dir,
                                                    std::string* error) {
   std::string key = "brush|";
   append_key(key, e.brush);

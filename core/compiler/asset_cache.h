@@ -53,14 +53,15 @@ class AssetCache {
   // A decoded image (linear RGB), by stamp and colour encoding.
   std::shared_ptr<const RgbImage> image(const std::filesystem::path& file, bool srgb, std::string* error);
   // An image's alpha channel (empty without one), by stamp.
-  std::shared_ptr<const std::vector<float>> image_alpha(const std::filesystem::path& file, std::string* error);
+  std::shared_ptr<const std::vector<float>> image_alpha(const std::filesystem::path& file,
+                                                        std::string* error);
   // An image's size from its header (image_header.h), by stamp.
   std::optional<ImageSize> image_size(const std::filesystem::path& file, std::string* error);
   // An OBJ mesh as read, in object space, by stamp.
   std::shared_ptr<const TriangleMeshData> mesh(const std::filesystem::path& file, std::string* error);
   // An emitter's brush (brush.h), by the brush parameters and the image's stamp.
-  std::shared_ptr<const AlphaMask> brush(const StrokeEmitterDesc& emitter, const std::filesystem::path& base_dir,
-                                         std::string* error);
+  std::shared_ptr<const AlphaMask> brush(const StrokeEmitterDesc& emitter,
+                                         const std::filesystem::path& base_dir, std::string* error);
 
   // What the compiler built (bottom-level BVHs, placed shapes, stroke sets), under
   // keys it makes from everything that shaped them; null when absent.
@@ -102,8 +103,8 @@ class AssetCache {
  private:
   struct Entry {
     std::shared_ptr<const void> value;
-    uint64_t used = 0;                // the compile that last used it
-    std::vector<std::string> from;    // entries it was built from, kept while it is
+    uint64_t used = 0;              // the compile that last used it
+    std::vector<std::string> from;  // entries it was built from, kept while it is
   };
   void note_read(const std::filesystem::path& file);
   // The failure kept for this stamp, if any (sets *error).

@@ -92,9 +92,12 @@ struct ClosureKind {
   std::span<const Binding> first, second;
 };
 constexpr ClosureKind kKinds[] = {
-    {DiffuseDesc::type_name, kDiffuse, {}},       {ConductorDesc::type_name, kConductor, {}},
-    {DielectricDesc::type_name, kDielectric, {}}, {EmissiveDesc::type_name, kEmissive, {}},
-    {UnlitDesc::type_name, kUnlit, {}},           {TransparentDesc::type_name, kTransparent, {}},
+    {DiffuseDesc::type_name, kDiffuse, {}},
+    {ConductorDesc::type_name, kConductor, {}},
+    {DielectricDesc::type_name, kDielectric, {}},
+    {EmissiveDesc::type_name, kEmissive, {}},
+    {UnlitDesc::type_name, kUnlit, {}},
+    {TransparentDesc::type_name, kTransparent, {}},
     {ToonDesc::type_name, kToonColor, kToonSettings},
 };
 

@@ -55,14 +55,16 @@ SceneDesc moving_parts_at(const SceneDesc& desc, double frame) {
   at.camera = desc.camera;
   at.objects = desc.objects;
   for (const TrackDesc& track : desc.animation)
-    if (track.target.starts_with("camera/") || track.target.starts_with("objects/")) at.animation.push_back(track);
+    if (track.target.starts_with("camera/") || track.target.starts_with("objects/"))
+      at.animation.push_back(track);
   apply_animation(at, frame);
   return at;
 }
 std::optional<Shutter> shutter_states(const SceneDesc& desc) {
   const RenderSettings& r = desc.render;
   if (!r.motion_blur() || desc.animation.empty()) return std::nullopt;
-  const double open = double(r.frame) + double(r.shutter_open), close = double(r.frame) + double(r.shutter_close);
+  const double open = double(r.frame) + double(r.shutter_open),
+               close = double(r.frame) + double(r.shutter_close);
   if (!animated_between(desc, open, close)) return std::nullopt;
   return Shutter{moving_parts_at(desc, open), moving_parts_at(desc, close)};
 }
@@ -93,8 +95,9 @@ bool same_crease_patches(const OutlineDesc& a, const OutlineDesc& b) {
   return wants_crease_patches(a) == wants_crease_patches(b) &&
          (!wants_crease_patches(a) || a.crease.threshold == b.crease.threshold);
 }
-void set_crease_patches(const OutlineDesc& outlines, const std::vector<std::shared_ptr<const PlacedShape>>& placed,
-                        RenderScene& scene, AssetCache& assets) {
+void set_crease_patches(const OutlineDesc& outlines,
+                        const std::vector<std::shared_ptr<const PlacedShape>>& placed, RenderScene& scene,
+                        AssetCache& assets) {
   const bool wanted = wants_crease_patches(outlines);
   for (size_t i = 0; i < scene.objects.size(); ++i)
     scene.objects[i].crease_patches =
@@ -127,7 +130,8 @@ void forgive_missing_files(const std::vector<AssetReference>& references, std::v
 // unreadable ones from the failures the cache remembers.
 std::vector<std::string> asset_warnings(const std::vector<AssetReference>& references, AssetCache& assets) {
   std::vector<std::string> warnings;
-  for (const MissingAsset& m : missing_assets(references)) warnings.push_back(describe(m) + ": drawn as a placeholder");
+  for (const MissingAsset& m : missing_assets(references))
+    warnings.push_back(describe(m) + ": drawn as a placeholder");
   std::vector<std::filesystem::path> reported;
   for (const AssetReference& r : references) {
     if (!r.exists || std::find(reported.begin(), reported.end(), r.resolved) != reported.end()) continue;
@@ -136,7 +140,8 @@ std::vector<std::string> asset_warnings(const std::vector<AssetReference>& refer
     reported.push_back(r.resolved);
     std::vector<std::string> users;
     for (const AssetReference& other : references)
-      if (other.resolved == r.resolved && std::find(users.begin(), users.end(), other.site.user) == users.end())
+      if (other.resolved == r.resolved &&
+          std::find(users.begin(), users.end(), other.site.user) == users.end())
         users.push_back(other.site.user);
     warnings.push_back(*error + ", used by " + users_text(users) + ": drawn as a placeholder");
   }
@@ -145,7 +150,8 @@ std::vector<std::string> asset_warnings(const std::vector<AssetReference>& refer
 
 }  // namespace
 
-StageSet SceneCompiler::changed_files(const SceneDesc& desc, std::map<std::string, std::string>& stamps) const {
+StageSet SceneCompiler::changed_files(const SceneDesc& desc,
+                                      std::map<std::string, std::string>& stamps) const {
   StageSet changes;
   for (const AssetRef& asset : collect_assets(desc)) {
     if (asset.written.empty()) continue;
@@ -222,8 +228,8 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
     ++counters_.compiles;
     counters_.files_read = assets_.files_read();
   };
-  if (last_ && result.changes.within(
-                   {Stage::layout, Stage::limits, Stage::resolve, Stage::camera, Stage::sampling, Stage::film})) {
+  if (last_ && result.changes.within({Stage::layout, Stage::limits, Stage::resolve, Stage::camera,
+                                      Stage::sampling, Stage::film})) {
     // Nothing of the world changed: a new view of the same one, with the crease
     // patches of a new threshold.
     auto scene = std::make_shared<RenderScene>(*last_);
@@ -240,7 +246,9 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   if (!last_ || result.changes.has(Stage::material)) {
     // Only the materials whose description changed are compiled again.
     std::vector<Material> last_table;
-    if (last_) last_table.assign(last_->materials.begin(), last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
+    if (last_)
+      last_table.assign(last_->materials.begin(),
+                        last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
     // An image changed on disk (or appeared) is seen only by compiling its materials again.
     LastMaterials previous;
     if (last_desc_ && !file_changes.has(Stage::material))
@@ -249,14 +257,17 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
                                              options.stand_in_for_broken_graphs ? &result.warnings : nullptr);
     ++counters_.material_tables;
   } else {
-    for (const auto& keys : material_keys_) assets_.touch(keys);  // the images the reused table holds stay cached
-    scene->materials.assign(last_->materials.begin(), last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
+    for (const auto& keys : material_keys_)
+      assets_.touch(keys);  // the images the reused table holds stay cached
+    scene->materials.assign(last_->materials.begin(),
+                            last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
     scene->material_names.assign(last_->material_names.begin(),
                                  last_->material_names.begin() + std::ptrdiff_t(last_document_materials_));
   }
   const size_t document_materials = scene->materials.size();
   std::map<std::string, uint32_t> material_index;
-  for (size_t i = 0; i < scene->material_names.size(); ++i) material_index[scene->material_names[i]] = uint32_t(i);
+  for (size_t i = 0; i < scene->material_names.size(); ++i)
+    material_index[scene->material_names[i]] = uint32_t(i);
 
   ObjectBuild objects{assets_, counters_, desc.base_dir, options.stand_in_for_missing_assets};
   std::vector<StrokeAnchor> anchors;
@@ -293,8 +304,8 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
     if (moves(shutter, i)) {
       // Traced where it stands at each ray's instant; lights and strokes read it at
       // the frame (docs/architecture.md, "Motion blur").
-      const MovingShape moving =
-          place_moving(obj, *placed, shutter->open.objects[i].transform, shutter->close.objects[i].transform, objects);
+      const MovingShape moving = place_moving(obj, *placed, shutter->open.objects[i].transform,
+                                              shutter->close.objects[i].transform, objects);
       if (!moving.problem.empty()) {
         result.errors.push_back(where + "while the shutter is open, " + moving.problem);
         continue;
@@ -363,7 +374,8 @@ StrokeAnchor SceneCompiler::stroke_anchor(const ObjectDesc& obj, size_t index, c
   const auto at_rest = place_object(*rest, build, &rest_key, &error);
   if (!at_rest || !at_rest->problem.empty()) return {};
   const Transform then = transform_from_desc(rest->transform);
-  return {std::move(rest_key), at_rest->world, Transform{then.inv, then.m}, now * Transform{then.inv, then.m}};
+  return {std::move(rest_key), at_rest->world, Transform{then.inv, then.m},
+          now * Transform{then.inv, then.m}};
 }
 
 CompileResult compile_scene(const SceneDesc& desc, const CompileOptions& options) {

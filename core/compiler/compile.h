@@ -26,7 +26,7 @@ struct ObjectBuild;
 struct StrokeAnchor;
 
 struct CompileOptions {
-  Cancel cancel;                  // checked between objects and inside stroke building
+  Cancel cancel;                   // checked between objects and inside stroke building
   std::uint64_t memory_limit = 0;  // bytes the estimate may reach; 0: half the machine's memory
   // Draw a material graph that does not compile in a loud stand-in colour and report
   // it in `warnings`, rather than failing the compile (the editor: the scene stays usable).
@@ -78,12 +78,12 @@ class SceneCompiler {
 
   AssetCache assets_;
   CompileCounters counters_;
-  const SceneDesc* rest_ = nullptr;  // the document at frame_start, while a compile of strokes needs it
+  const SceneDesc* rest_ = nullptr;     // the document at frame_start, while a compile of strokes needs it
   std::optional<SceneDesc> last_desc_;  // the document last_ was compiled from
   std::shared_ptr<const RenderScene> last_;
-  size_t last_document_materials_ = 0;  // last_->materials before the stroke materials
+  size_t last_document_materials_ = 0;                   // last_->materials before the stroke materials
   std::vector<std::vector<std::string>> material_keys_;  // per material: the cache entries it was built from
-  std::map<std::string, std::string> file_stamps_;  // asset file -> stamp, at the last compile
+  std::map<std::string, std::string> file_stamps_;       // asset file -> stamp, at the last compile
   // The placed shapes of last_'s document objects (its first objects), whose crease
   // patches a new crease threshold recomputes without recompiling the world.
   std::vector<std::shared_ptr<const PlacedShape>> placed_;

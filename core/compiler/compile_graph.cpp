@@ -70,7 +70,8 @@ class Lowering {
   // The register holding v as the type an input expects (graph_sockets.h conversions).
   VReg convert(Value v, SocketType to) {
     if (v.type == to || to == SocketType::closure) return v.reg;
-    if (to == SocketType::float_value && v.type == SocketType::color) return emit(ShaderOp::luminance, {v.reg});
+    if (to == SocketType::float_value && v.type == SocketType::color)
+      return emit(ShaderOp::luminance, {v.reg});
     if (to == SocketType::float_value && v.type == SocketType::vector) return emit(ShaderOp::mean, {v.reg});
     return v.reg;  // floats are stored splatted; colours and vectors share a layout
   }
@@ -116,7 +117,7 @@ class Lowering {
   std::vector<ClosureNode> closures_;
   std::vector<ClosureLeaf> leaves_;
   std::vector<std::vector<VReg>> leaf_inputs_;
-  std::vector<VReg> mix_fac_;                            // per ClosureNode: its fac register, or kNone
+  std::vector<VReg> mix_fac_;  // per ClosureNode: its fac register, or kNone
   std::shared_ptr<ShaderProgram> program_ = std::make_shared<ShaderProgram>();
   VReg line_color_ = kNone, line_width_ = kNone, stroke_color_ = kNone;
   size_t run_nodes_ = 0;
@@ -230,8 +231,8 @@ void Lowering::stand_in(size_t node) {
 
 VReg Lowering::color_input_texture(size_t node, const ColorInput& in) {
   if (const auto* ch = std::get_if<CheckerTextureDesc>(&in))
-    return emit(ShaderOp::checker_color, {implicit(Implicit::uv), constant(ch->even), constant(ch->odd),
-                                          constant(Vec3(ch->scale))});
+    return emit(ShaderOp::checker_color,
+                {implicit(Implicit::uv), constant(ch->even), constant(ch->odd), constant(Vec3(ch->scale))});
   const auto& img = std::get<ImageTextureDesc>(in);
   std::string error;
   auto image = assets_.image(base_ / img.path, img.srgb, &error);
@@ -240,7 +241,8 @@ VReg Lowering::color_input_texture(size_t node, const ColorInput& in) {
     return constant(Vec3(0.f));
   }
   program_->images.push_back({std::move(image), nullptr});
-  const VReg texel = emit(ShaderOp::image_color, {implicit(Implicit::uv)}, 0, uint32_t(program_->images.size() - 1));
+  const VReg texel =
+      emit(ShaderOp::image_color, {implicit(Implicit::uv)}, 0, uint32_t(program_->images.size() - 1));
   if (img.scale == Color(1.f)) return texel;
   return emit(ShaderOp::vector_math, {texel, constant(img.scale), constant(Vec3(1.f))},
               uint8_t(ShaderVector::multiply));
@@ -266,7 +268,9 @@ void Lowering::lower_node(size_t node) {
       [&]<class T>(const T& d) {
         // The valued inputs in order, as registers; an output socket's value, for the nodes downstream.
         const auto in = [&](size_t i) { return input(node, d, i); };
-        const auto out = [&](size_t socket, VReg reg, SocketType type) { outputs_[{node, socket}] = Value{reg, type}; };
+        const auto out = [&](size_t socket, VReg reg, SocketType type) {
+          outputs_[{node, socket}] = Value{reg, type};
+        };
         if constexpr (std::is_same_v<T, OutputNode>) {
           // The root is the last closure made (allocate() puts it first).
           if (auto root = closure_input(node, "surface")) {
@@ -307,9 +311,8 @@ void Lowering::lower_node(size_t node) {
           const auto mode = uint8_t(d.noise);
           const auto oct = uint32_t(std::clamp(d.octaves, 1, 16));  // the parameter's range
           out(0, emit(ShaderOp::noise_fac, {p, scale, rough, distortion}, mode, oct),
-                               SocketType::float_value);
-          out(1, emit(ShaderOp::noise_color, {p, scale, rough, distortion}, mode, oct),
-                               SocketType::color);
+              SocketType::float_value);
+          out(1, emit(ShaderOp::noise_color, {p, scale, rough, distortion}, mode, oct), SocketType::color);
         } else if constexpr (std::is_same_v<T, VoronoiNode>) {
           const VReg scale = in(0), randomness = in(1), p = in(2);
           out(0, emit(ShaderOp::voronoi_distance, {p, scale, randomness}), SocketType::float_value);
@@ -327,17 +330,16 @@ void Lowering::lower_node(size_t node) {
           std::stable_sort(stops.begin(), stops.end(),
                            [](const RampStop& a, const RampStop& b) { return a.position < b.position; });
           program_->ramps.push_back(std::move(stops));
-          out(0, emit(ShaderOp::ramp, {in(0)}, uint8_t(d.interpolation),
-                                    uint32_t(program_->ramps.size() - 1)),
-                               SocketType::color);
+          out(0,
+              emit(ShaderOp::ramp, {in(0)}, uint8_t(d.interpolation), uint32_t(program_->ramps.size() - 1)),
+              SocketType::color);
         } else if constexpr (std::is_same_v<T, MathNode>) {
           VReg r = emit(ShaderOp::math, {in(0), in(1), in(2)}, uint8_t(d.operation));
           if (d.clamp_result) r = emit(ShaderOp::clamp01, {r});
           out(0, r, SocketType::float_value);
         } else if constexpr (std::is_same_v<T, MapRangeNode>) {
-          out(0, emit(ShaderOp::map_range, {in(0), in(1), in(2), in(3), in(4)},
-                                    uint8_t(d.clamp_result)),
-                               SocketType::float_value);
+          out(0, emit(ShaderOp::map_range, {in(0), in(1), in(2), in(3), in(4)}, uint8_t(d.clamp_result)),
+              SocketType::float_value);
         } else if constexpr (std::is_same_v<T, MixColorNode>) {
           VReg r = emit(ShaderOp::mix_color, {in(0), in(1), in(2)}, uint8_t(d.blend));
           if (d.clamp_result) r = emit(ShaderOp::clamp01, {r});
@@ -345,12 +347,12 @@ void Lowering::lower_node(size_t node) {
         } else if constexpr (std::is_same_v<T, VectorMathNode>) {
           const VReg a = in(0), b = in(1), s = in(2);
           out(0, emit(ShaderOp::vector_math, {a, b, s}, uint8_t(d.operation)), SocketType::vector);
-          out(1, emit(ShaderOp::vector_value, {a, b, s}, uint8_t(d.operation)),
-                               SocketType::float_value);
+          out(1, emit(ShaderOp::vector_value, {a, b, s}, uint8_t(d.operation)), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, HsvNode>) {
           out(0, emit(ShaderOp::hsv_adjust, {in(0), in(1), in(2), in(3), in(4)}), SocketType::color);
         } else if constexpr (std::is_same_v<T, ConvertColorNode>) {
-          const ShaderOp op = d.conversion == ColorConversion::rgb_to_hsv ? ShaderOp::rgb_to_hsv : ShaderOp::hsv_to_rgb;
+          const ShaderOp op =
+              d.conversion == ColorConversion::rgb_to_hsv ? ShaderOp::rgb_to_hsv : ShaderOp::hsv_to_rgb;
           out(0, emit(op, {in(0)}), SocketType::color);
         } else if constexpr (std::is_same_v<T, SeparateNode>) {
           const VReg v = in(0);
@@ -362,9 +364,9 @@ void Lowering::lower_node(size_t node) {
           out(0, v, SocketType::vector);
           out(1, v, SocketType::color);
         } else if constexpr (std::is_same_v<T, GeometryNode>) {
-          constexpr ShaderOp ops[] = {ShaderOp::position,  ShaderOp::normal,      ShaderOp::true_normal,
-                                      ShaderOp::uv,        ShaderOp::incoming,    ShaderOp::facing,
-                                      ShaderOp::object_id, ShaderOp::material_id, ShaderOp::depth,
+          constexpr ShaderOp ops[] = {ShaderOp::position,  ShaderOp::normal,         ShaderOp::true_normal,
+                                      ShaderOp::uv,        ShaderOp::incoming,       ShaderOp::facing,
+                                      ShaderOp::object_id, ShaderOp::material_id,    ShaderOp::depth,
                                       ShaderOp::random,    ShaderOp::object_position};
           static_assert(std::size(ops) == T::outputs.size());
           for (size_t k = 0; k < out_count; ++k)
@@ -408,8 +410,9 @@ void Lowering::lower_node(size_t node) {
             const SocketInfo& socket = c_.inputs[node][i];
             if (!socket.has_value) continue;
             const ClosureSetter set = closure_input_setter(T::type_name, socket.name);
-            if (!set) return fail(node, "input \"" + std::string(socket.name) + "\" of a " +
-                                            std::string(T::type_name) + " node has no place in its material");
+            if (!set)
+              return fail(node, "input \"" + std::string(socket.name) + "\" of a " +
+                                    std::string(T::type_name) + " node has no place in its material");
             regs.push_back(in(i));
             inputs.push_back({0, bounds(node, d, i), set});
           }
@@ -441,8 +444,8 @@ void Lowering::fold() {
     }
     const Vec3 v = eval_instr(*program_, local, registers, ShadingPoint{});
     is_constant_[ir.out] = true;
-    value_[ir.out] = Vec3(std::isfinite(v.x) ? v.x : 0.f, std::isfinite(v.y) ? v.y : 0.f,
-                          std::isfinite(v.z) ? v.z : 0.f);
+    value_[ir.out] =
+        Vec3(std::isfinite(v.x) ? v.x : 0.f, std::isfinite(v.y) ? v.y : 0.f, std::isfinite(v.z) ? v.z : 0.f);
   }
   code_ = std::move(kept);
 }
@@ -475,7 +478,8 @@ std::shared_ptr<ShaderProgram> Lowering::allocate() {
   std::vector<size_t> last_use(n, 0);
   std::vector<bool> used(n, false);
   for (size_t i = 0; i < code_.size(); ++i)
-    for (int k = 0; k < code_[i].inputs; ++k) last_use[code_[i].in[size_t(k)]] = i, used[code_[i].in[size_t(k)]] = true;
+    for (int k = 0; k < code_[i].inputs; ++k)
+      last_use[code_[i].in[size_t(k)]] = i, used[code_[i].in[size_t(k)]] = true;
   auto keep = [&](VReg r) {
     if (r != kNone) last_use[r] = kForever, used[r] = true;
   };
@@ -534,7 +538,8 @@ std::shared_ptr<ShaderProgram> Lowering::allocate() {
     }
     std::visit(
         [&]<class M>(const M&) {
-          p.lines_pass_through |= std::is_same_v<M, ConductorMaterial> || std::is_same_v<M, DielectricMaterial> ||
+          p.lines_pass_through |= std::is_same_v<M, ConductorMaterial> ||
+                                  std::is_same_v<M, DielectricMaterial> ||
                                   std::is_same_v<M, TransparentMaterial>;
         },
         leaf.tmpl);
@@ -585,8 +590,9 @@ std::shared_ptr<const ShaderProgram> Lowering::run() {
 
 }  // namespace
 
-std::shared_ptr<const ShaderProgram> compile_graph(const GraphDesc& graph, const std::filesystem::path& base_dir,
-                                                   AssetCache& assets, std::vector<std::string>& errors) {
+std::shared_ptr<const ShaderProgram> compile_graph(const GraphDesc& graph,
+                                                   const std::filesystem::path& base_dir, AssetCache& assets,
+                                                   std::vector<std::string>& errors) {
   CheckedGraph checked;
   if (!check_graph(graph, checked, errors)) return nullptr;
   if (graph.nodes.size() > 65535) {

@@ -17,13 +17,15 @@ namespace inkray {
 
 // Compiles a closure node's settings (a plain material description) into the
 // template its per-hit inputs are copied over; defined by compile_materials.
-std::optional<Material> compile_closure_template(const MaterialVariant& data, const std::filesystem::path& base_dir,
-                                                 AssetCache& assets, std::string* error);
+std::optional<Material> compile_closure_template(const MaterialVariant& data,
+                                                 const std::filesystem::path& base_dir, AssetCache& assets,
+                                                 std::string* error);
 
 // The program, or null with one message per problem appended to `errors`, each
 // starting with the JSON path inside the material ("nodes[2] \"ramp\": ...",
 // "links[0].input: ...").
-std::shared_ptr<const ShaderProgram> compile_graph(const GraphDesc& graph, const std::filesystem::path& base_dir,
-                                                   AssetCache& assets, std::vector<std::string>& errors);
+std::shared_ptr<const ShaderProgram> compile_graph(const GraphDesc& graph,
+                                                   const std::filesystem::path& base_dir, AssetCache& assets,
+                                                   std::vector<std::string>& errors);
 
 }  // namespace inkray

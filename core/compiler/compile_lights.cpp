@@ -17,8 +17,8 @@ Light compile_light(const LightDesc& desc, float scene_radius) {
         } else if constexpr (std::is_same_v<T, SpotLightDesc>) {
           const float cos_total = std::cos(glm::radians(l.cone_angle));
           const float cos_falloff = std::cos(glm::radians(std::min(l.falloff_angle, l.cone_angle)));
-          return SpotLight{l.position, Frame::from_z(glm::normalize(l.target - l.position)), l.color * l.intensity,
-                           cos_total, std::max(cos_falloff, cos_total + 1e-6f)};
+          return SpotLight{l.position, Frame::from_z(glm::normalize(l.target - l.position)),
+                           l.color * l.intensity, cos_total, std::max(cos_falloff, cos_total + 1e-6f)};
         } else {
           return DirectionalLight{-glm::normalize(l.direction), l.color * l.intensity, scene_radius};
         }

@@ -166,10 +166,13 @@ struct ClearTextures {
 
 }  // namespace
 
-Material stand_in_material(float squares) { return UnlitMaterial{CheckerTexture{kStandInEven, kStandInOdd, squares}}; }
+Material stand_in_material(float squares) {
+  return UnlitMaterial{CheckerTexture{kStandInEven, kStandInOdd, squares}};
+}
 
-std::optional<Material> compile_closure_template(const MaterialVariant& data, const std::filesystem::path& base_dir,
-                                                 AssetCache& assets, std::string* error) {
+std::optional<Material> compile_closure_template(const MaterialVariant& data,
+                                                 const std::filesystem::path& base_dir, AssetCache& assets,
+                                                 std::string* error) {
   ImageCache images(base_dir, assets);
   MaterialDesc desc;
   desc.data = data;
@@ -196,8 +199,8 @@ size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<
     size_t start = 0;
     while (start <= error.size()) {
       const size_t end = std::min(error.find('\n', start), error.size());
-      const std::string line = "materials[" + std::to_string(i) + "] \"" + list[i].name + "\": " +
-                               error.substr(start, end - start);
+      const std::string line = "materials[" + std::to_string(i) + "] \"" + list[i].name +
+                               "\": " + error.substr(start, end - start);
       (stand_in ? *broken_graphs : errors).push_back(line);
       start = end + 1;
     }

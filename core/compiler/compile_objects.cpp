@@ -54,7 +54,8 @@ void moved_bounds(const Transform& t, Point3* lo, Point3* hi) {
 }
 
 // The mesh of a mesh-like shape in object space; null with *error for an unreadable file.
-std::shared_ptr<const Shape> object_space_mesh(const ShapeVariant& shape, ObjectBuild& build, std::string* error) {
+std::shared_ptr<const Shape> object_space_mesh(const ShapeVariant& shape, ObjectBuild& build,
+                                               std::string* error) {
   return std::visit(
       [&](const auto& s) -> std::shared_ptr<const Shape> {
         using T = std::decay_t<decltype(s)>;
@@ -62,16 +63,19 @@ std::shared_ptr<const Shape> object_space_mesh(const ShapeVariant& shape, Object
         if constexpr (std::is_same_v<T, QuadDesc>) {
           return std::make_shared<const Shape>(make_quad(s.corner, s.edge_u, s.edge_v, identity));
         } else if constexpr (std::is_same_v<T, BoxDesc>) {
-          return std::make_shared<const Shape>(make_box(glm::min(s.min, s.max), glm::max(s.min, s.max), identity));
+          return std::make_shared<const Shape>(
+              make_box(glm::min(s.min, s.max), glm::max(s.min, s.max), identity));
         } else if constexpr (std::is_same_v<T, MeshDesc>) {
           const auto data = build.assets.mesh(build.base_dir / s.path, error);
           if (!data) return nullptr;
           if (needs_auto_smooth(*data, s.smooth_angle)) {
             TriangleMeshData smooth = auto_smooth(*data, s.smooth_angle);
-            return std::make_shared<const Shape>(make_mesh(std::move(smooth.positions), std::move(smooth.normals),
-                                                           std::move(smooth.uvs), std::move(smooth.indices), identity));
+            return std::make_shared<const Shape>(make_mesh(std::move(smooth.positions),
+                                                           std::move(smooth.normals), std::move(smooth.uvs),
+                                                           std::move(smooth.indices), identity));
           }
-          return std::make_shared<const Shape>(make_mesh(data->positions, data->normals, data->uvs, data->indices, identity));
+          return std::make_shared<const Shape>(
+              make_mesh(data->positions, data->normals, data->uvs, data->indices, identity));
         } else {
           static_assert(std::is_same_v<T, SphereDesc>, "a new shape type needs a case here");
           return nullptr;  // spheres are placed analytically
@@ -105,7 +109,8 @@ std::shared_ptr<const PlacedShape> place_mesh(std::shared_ptr<const ShapeBvh> bv
   if (to_world.is_identity()) {
     placed->world = placed->bvh->shared_shape();
   } else {
-    placed->world = std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(placed->bvh->shape()), to_world));
+    placed->world =
+        std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(placed->bvh->shape()), to_world));
     ++build.counters.placements;
   }
   placed->problem = world_extent_problem(*placed->world);
@@ -115,7 +120,8 @@ std::shared_ptr<const PlacedShape> place_mesh(std::shared_ptr<const ShapeBvh> bv
 
 // What stands in for a mesh that cannot be read. Under keys of its own, never the
 // file's, so the file is read as soon as it can be.
-std::shared_ptr<const PlacedShape> place_stand_in(const ObjectDesc& object, ObjectBuild& build, std::string* key) {
+std::shared_ptr<const PlacedShape> place_stand_in(const ObjectDesc& object, ObjectBuild& build,
+                                                  std::string* key) {
   *key = "placed|stand-in box|" + param_key(object.transform);
   if (auto found = build.assets.find<PlacedShape>(*key)) return found;
   const std::string bvh_key = "bvh|stand-in box";
@@ -126,8 +132,8 @@ std::shared_ptr<const PlacedShape> place_stand_in(const ObjectDesc& object, Obje
                                          std::make_shared<const Shape>(make_box(-half, half, Transform{}))));
     ++build.counters.shape_bvhs;
   }
-  return place_mesh(std::move(bvh), transform_from_desc(object.transform), *key, bvh_key, "features|" + bvh_key,
-                    build);
+  return place_mesh(std::move(bvh), transform_from_desc(object.transform), *key, bvh_key,
+                    "features|" + bvh_key, build);
 }
 
 }  // namespace
@@ -138,8 +144,8 @@ Transform transform_from_desc(const TransformDesc& desc) {
   return Transform::translate(desc.translate) * t;
 }
 
-std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build, std::string* key,
-                                                std::string* error) {
+std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build,
+                                                std::string* key, std::string* error) {
   // A mesh is known by its file's stamp, so a file changed on disk is read again,
   // and by its smooth angle. `source_key` is what the shape was made from: the file
   // as read (the cache's key for it), kept while the BVH is so that another smooth
@@ -207,10 +213,11 @@ MovingShape place_moving(const ObjectDesc& object, const PlacedShape& placed, co
   return moving;
 }
 
-std::shared_ptr<const std::vector<uint32_t>> crease_patches(const PlacedShape& placed, float threshold_degrees,
-                                                            AssetCache& assets) {
+std::shared_ptr<const std::vector<uint32_t>> crease_patches(const PlacedShape& placed,
+                                                            float threshold_degrees, AssetCache& assets) {
   if (placed.features_key.empty()) return nullptr;
-  const auto* mesh = std::get_if<TriangleMesh>(placed.features_in_world ? placed.world.get() : &placed.bvh->shape());
+  const auto* mesh =
+      std::get_if<TriangleMesh>(placed.features_in_world ? placed.world.get() : &placed.bvh->shape());
   if (!mesh) return nullptr;
   std::string key = "crease patches|" + placed.features_key + "|";
   append_key(key, threshold_degrees);
@@ -221,8 +228,9 @@ std::shared_ptr<const std::vector<uint32_t>> crease_patches(const PlacedShape& p
                            std::make_shared<const MeshFeatures>(find_feature_edges(
                                std::span(mesh->positions.data(), mesh->vertex_count()), mesh->indices)));
   }
-  return assets.keep(key, std::make_shared<const std::vector<uint32_t>>(smooth_patches(*features, threshold_degrees)),
-                     {placed.features_key});
+  return assets.keep(
+      key, std::make_shared<const std::vector<uint32_t>>(smooth_patches(*features, threshold_degrees)),
+      {placed.features_key});
 }
 
 }  // namespace inkray

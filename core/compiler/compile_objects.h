@@ -38,8 +38,8 @@ struct ObjectBuild {
 // smooth angle reads no file. Null with *error set when its mesh cannot be read; with
 // build.stand_ins, a unit box centred on the object's origin instead (*error set
 // all the same), so the user sees where the mesh belongs.
-std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build, std::string* key,
-                                                std::string* error);
+std::shared_ptr<const PlacedShape> place_object(const ObjectDesc& object, ObjectBuild& build,
+                                                std::string* key, std::string* error);
 
 // An object that moves while the shutter is open (docs/architecture.md, "Motion
 // blur"): its shape in its own space, traced by a BVH that an instance places at the
@@ -60,8 +60,8 @@ MovingShape place_moving(const ObjectDesc& object, const PlacedShape& placed, co
 // threshold in degrees (smooth_patches, mesh_features.h); null for a sphere. The
 // feature edges are found once per shape and the patches once per threshold, both
 // kept in the cache.
-std::shared_ptr<const std::vector<uint32_t>> crease_patches(const PlacedShape& placed, float threshold_degrees,
-                                                            AssetCache& assets);
+std::shared_ptr<const std::vector<uint32_t>> crease_patches(const PlacedShape& placed,
+                                                            float threshold_degrees, AssetCache& assets);
 
 // Scale, then the rotations in order, then translation.
 Transform transform_from_desc(const TransformDesc& desc);

@@ -218,11 +218,13 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
       for (Point3& p : mesh.positions) p = move.point(p);
       for (Normal3& n : mesh.normals) n = glm::normalize(move.normal(n));
       auto mask = std::make_shared<AlphaMask>(*b.shape->bvh->mask());
-      const glm::vec3 stretch(glm::length(move.vector(Vec3(1.f, 0.f, 0.f))), glm::length(move.vector(Vec3(0.f, 1.f, 0.f))),
+      const glm::vec3 stretch(glm::length(move.vector(Vec3(1.f, 0.f, 0.f))),
+                              glm::length(move.vector(Vec3(0.f, 1.f, 0.f))),
                               glm::length(move.vector(Vec3(0.f, 0.f, 1.f))));
       mask->layer_thickness *= std::max({stretch.x, stretch.y, stretch.z, 1.f});
       moved = build.assets.keep<ShapeBvh>(
-          moved_key, std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(mesh)), std::move(mask)));
+          moved_key,
+          std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(mesh)), std::move(mask)));
       ++build.counters.shape_bvhs;
     }
     scene.geometry.add(moved, Transform{}, moved->shared_shape(), b.emitter->indirect);

@@ -11,8 +11,8 @@
 namespace inkray {
 
 std::string node_label(const GraphDesc& g, size_t i) {
-  return element_path("nodes", i) + " \"" + g.nodes[i].id + "\" (" + std::string(node_type_name(g.nodes[i].data)) +
-         ")";
+  return element_path("nodes", i) + " \"" + g.nodes[i].id + "\" (" +
+         std::string(node_type_name(g.nodes[i].data)) + ")";
 }
 
 namespace {
@@ -28,7 +28,6 @@ std::string socket_list(const std::vector<SocketInfo>& sockets) {
   return out.empty() ? "none" : out;
 }
 std::string type_name(SocketType t) { return std::string(kSocketTypeNames[size_t(t)]); }
-
 
 }  // namespace
 
@@ -48,7 +47,8 @@ bool check_graph(const GraphDesc& g, CheckedGraph& c, std::vector<std::string>& 
       errors.push_back(element_path("nodes", i) + ".id: duplicate node id \"" + g.nodes[i].id + "\" (also " +
                        element_path("nodes", it->second) + ")");
   }
-  if (outputs.empty()) errors.push_back("nodes: the graph has no output node (add {\"id\": ..., \"type\": \"output\"})");
+  if (outputs.empty())
+    errors.push_back("nodes: the graph has no output node (add {\"id\": ..., \"type\": \"output\"})");
   for (size_t k = 1; k < outputs.size(); ++k)
     errors.push_back(node_label(g, outputs[k]) + ": a second output node (the first is " +
                      node_label(g, outputs[0]) + ")");
@@ -67,9 +67,11 @@ bool check_graph(const GraphDesc& g, CheckedGraph& c, std::vector<std::string>& 
     if (to == by_id.end()) errors.push_back(at + ".to: no node \"" + l.to + "\" (nodes: " + ids + ")");
     if (from == by_id.end() || to == by_id.end()) continue;
     const auto outs = node_outputs(g.nodes[from->second].data);
-    const auto out_it = std::find_if(outs.begin(), outs.end(), [&](const SocketDecl& s) { return s.name == l.output; });
+    const auto out_it =
+        std::find_if(outs.begin(), outs.end(), [&](const SocketDecl& s) { return s.name == l.output; });
     const auto& ins = c.inputs[to->second];
-    const auto in_it = std::find_if(ins.begin(), ins.end(), [&](const SocketInfo& s) { return s.name == l.input; });
+    const auto in_it =
+        std::find_if(ins.begin(), ins.end(), [&](const SocketInfo& s) { return s.name == l.input; });
     if (out_it == outs.end())
       errors.push_back(at + ".output: " + node_label(g, from->second) + " has no output \"" + l.output +
                        "\" (outputs: " + socket_list(outs) + ")");
@@ -78,15 +80,16 @@ bool check_graph(const GraphDesc& g, CheckedGraph& c, std::vector<std::string>& 
                        "\" (inputs: " + socket_list(ins) + ")");
     if (out_it == outs.end() || in_it == ins.end()) continue;
     if (!socket_converts(out_it->type, in_it->type)) {
-      errors.push_back(at + ": cannot link " + type_name(out_it->type) + " output \"" + l.output + "\" of \"" +
-                       l.from + "\" to " + type_name(in_it->type) + " input \"" + l.input + "\" of \"" + l.to + "\"");
+      errors.push_back(at + ": cannot link " + type_name(out_it->type) + " output \"" + l.output +
+                       "\" of \"" + l.from + "\" to " + type_name(in_it->type) + " input \"" + l.input +
+                       "\" of \"" + l.to + "\"");
       continue;
     }
     const size_t input = size_t(in_it - ins.begin());
     auto& slot = c.incoming[to->second][input];
     if (slot) {
-      errors.push_back(at + ".input: input \"" + l.input + "\" of \"" + l.to + "\" is already linked from \"" +
-                       g.nodes[slot->from].id + "\"");
+      errors.push_back(at + ".input: input \"" + l.input + "\" of \"" + l.to +
+                       "\" is already linked from \"" + g.nodes[slot->from].id + "\"");
       continue;
     }
     slot = GraphEdge{from->second, size_t(out_it - outs.begin()), to->second, input};
@@ -128,6 +131,5 @@ bool check_graph(const GraphDesc& g, CheckedGraph& c, std::vector<std::string>& 
     if (reach[i]) c.order.push_back(i);
   return true;
 }
-
 
 }  // namespace inkray

@@ -18,9 +18,9 @@ struct GraphEdge {
 
 struct CheckedGraph {
   size_t output_node = 0;
-  std::vector<std::vector<SocketInfo>> inputs;              // per node
+  std::vector<std::vector<SocketInfo>> inputs;                  // per node
   std::vector<std::vector<std::optional<GraphEdge>>> incoming;  // per node, per input socket
-  std::vector<size_t> order;                                // nodes that reach the output, sources first
+  std::vector<size_t> order;                                    // nodes that reach the output, sources first
 };
 
 // "nodes[2] \"ramp\" (color_ramp)": how messages name a node.

@@ -36,8 +36,8 @@ using NameIndex = AnimationNames;
 using Path = std::span<const std::string_view>;
 
 // Render settings that shape the shot itself: keyed, they would change what a frame is.
-constexpr std::string_view kUnkeyableRender[] = {"width", "height", "frame", "frame_start", "frame_end",
-                                                 "fps", "shutter_open", "shutter_close"};
+constexpr std::string_view kUnkeyableRender[] = {"width",     "height", "frame",        "frame_start",
+                                                 "frame_end", "fps",    "shutter_open", "shutter_close"};
 
 std::vector<std::string_view> split(std::string_view path) {
   std::vector<std::string_view> parts;
@@ -51,7 +51,6 @@ std::vector<std::string_view> split(std::string_view path) {
   }
   return parts;
 }
-
 
 // What to do with the parameter at the end of a path.
 struct Access {
@@ -85,23 +84,28 @@ void leaf(Access& a, const Param& p, T& field, std::string_view name) {
     return;
   }
   if (width == 0) {
-    a.error = in_quotes(name) + " cannot be keyed (only numbers, toggles, choices, points, vectors and colours)";
+    a.error =
+        in_quotes(name) + " cannot be keyed (only numbers, toggles, choices, points, vectors and colours)";
     return;
   }
   using Op = Access::Op;
   const bool write = a.op == Op::write;
   if constexpr (std::is_same_v<U, float>) {
     if (a.op == Op::read) *a.out = {double(field)};
-    if constexpr (writable) if (write) field = float(clamp_to(p, a.in[0]));
+    if constexpr (writable)
+      if (write) field = float(clamp_to(p, a.in[0]));
   } else if constexpr (std::is_same_v<U, int>) {
     if (a.op == Op::read) *a.out = {double(field)};
-    if constexpr (writable) if (write) field = int(std::lround(clamp_to(p, a.in[0])));
+    if constexpr (writable)
+      if (write) field = int(std::lround(clamp_to(p, a.in[0])));
   } else if constexpr (std::is_same_v<U, bool>) {
     if (a.op == Op::read) *a.out = {field ? 1.0 : 0.0};
-    if constexpr (writable) if (write) field = a.in[0] >= 0.5;
+    if constexpr (writable)
+      if (write) field = a.in[0] >= 0.5;
   } else if constexpr (std::is_enum_v<U>) {
     if (a.op == Op::read) *a.out = {double(field)};
-    if constexpr (writable) if (write) field = U(int(std::lround(clamp_to(p, a.in[0]))));
+    if constexpr (writable)
+      if (write) field = U(int(std::lround(clamp_to(p, a.in[0]))));
   } else if constexpr (std::is_same_v<U, Vec3>) {
     if (a.op == Op::read) *a.out = {field.x, field.y, field.z};
     if constexpr (writable)
@@ -146,7 +150,8 @@ void descend_struct(Access& a, T& desc, Path rest, std::string_view context) {
   }
   PathVisitor visitor{&a, rest};
   visit_params(desc, visitor);
-  if (!visitor.matched && a.error.empty()) a.error = in_quotes(context) + " has no parameter " + in_quotes(rest[0]);
+  if (!visitor.matched && a.error.empty())
+    a.error = in_quotes(context) + " has no parameter " + in_quotes(rest[0]);
 }
 
 template <class T>
@@ -200,8 +205,8 @@ void descend_transform(Access& a, Transform& t, Path rest) {
       index = index * 10 + size_t(c - '0');
     }
     if (!ok || index >= t.rotate.size()) {
-      a.error = "\"rotate/" + std::string(digits) + "\": the transform has " + std::to_string(t.rotate.size()) +
-                " rotations (numbered from 0)";
+      a.error = "\"rotate/" + std::string(digits) + "\": the transform has " +
+                std::to_string(t.rotate.size()) + " rotations (numbered from 0)";
       return;
     }
     return descend_struct(a, t.rotate[index], rest.subspan(2), "rotate");
@@ -210,8 +215,8 @@ void descend_transform(Access& a, Transform& t, Path rest) {
 }
 
 template <class Items, class Next>
-void named(Access& a, Items& items, const NameIndex::Map NameIndex::*index, Path rest, std::string_view section,
-           Next next) {
+void named(Access& a, Items& items, const NameIndex::Map NameIndex::*index, Path rest,
+           std::string_view section, Next next) {
   if (rest.empty()) {
     a.error = in_quotes(section) + " needs a name: " + std::string(section) + "/NAME/...";
     return;
@@ -262,7 +267,8 @@ void resolve(Scene& desc, std::string_view path, Access& a) {
       if (r[0] == "lines") return descend(a, group("lines", ""), m.lines, r.subspan(1));
       if (auto* graph = std::get_if<GraphDesc>(&m.data)) {
         if (r[0] != "nodes" || r.size() < 3) {
-          a.error = "a graph material's parameters are its nodes': materials/" + m.name + "/nodes/NODE_ID/PARAM";
+          a.error =
+              "a graph material's parameters are its nodes': materials/" + m.name + "/nodes/NODE_ID/PARAM";
           return;
         }
         for (auto& node : graph->nodes)
@@ -278,14 +284,17 @@ void resolve(Scene& desc, std::string_view path, Access& a) {
       if (r[0] == "name" || r[0] == "object" || r[0] == "count" || r[0] == "seed") {
         // A stroke keeps its place and looks from frame to frame: what decides which
         // strokes exist is not animated.
-        a.error = "strokes/" + e.name + "/" + std::string(r[0]) + " decides which strokes exist and cannot be keyed";
+        a.error = "strokes/" + e.name + "/" + std::string(r[0]) +
+                  " decides which strokes exist and cannot be keyed";
         return;
       }
       descend_struct(a, e, r, e.name);
     });
   }
-  a.error = "a target starts with camera, render, outlines, environment, objects, lights, materials or strokes, not " +
-            in_quotes(head);
+  a.error =
+      "a target starts with camera, render, outlines, environment, objects, lights, materials or strokes, "
+      "not " +
+      in_quotes(head);
 }
 
 // ---------------------------------------------------------------- interpolation
@@ -299,7 +308,8 @@ double auto_slope(const std::vector<KeyDesc>& keys, size_t i, size_t c) {
   const double before = (v - keys[i - 1].value[c]) / (keys[i].frame - keys[i - 1].frame);
   const double after = (keys[i + 1].value[c] - v) / (keys[i + 1].frame - keys[i].frame);
   if (before * after <= 0.0) return 0.0;
-  const double slope = (keys[i + 1].value[c] - keys[i - 1].value[c]) / (keys[i + 1].frame - keys[i - 1].frame);
+  const double slope =
+      (keys[i + 1].value[c] - keys[i - 1].value[c]) / (keys[i + 1].frame - keys[i - 1].frame);
   const double limit = 3.0 * std::min(std::fabs(before), std::fabs(after));
   return std::copysign(std::min(std::fabs(slope), limit), slope);
 }
@@ -341,13 +351,16 @@ int key_width(ParamKind kind) {
     case ParamKind::number:
     case ParamKind::integer:
     case ParamKind::toggle:
-    case ParamKind::choice: return 1;
+    case ParamKind::choice:
+      return 1;
     case ParamKind::point:
     case ParamKind::direction:
     case ParamKind::vector:
     case ParamKind::color:
-    case ParamKind::color_input: return 3;
-    default: return 0;
+    case ParamKind::color_input:
+      return 3;
+    default:
+      return 0;
   }
 }
 
@@ -379,7 +392,8 @@ std::optional<Param> animation_target(const SceneDesc& desc, std::string_view pa
   return probe(desc, path, error, nullptr);
 }
 
-TargetResolver::TargetResolver(const SceneDesc& desc) : desc_(desc), names_(std::make_unique<AnimationNames>(desc)) {}
+TargetResolver::TargetResolver(const SceneDesc& desc)
+    : desc_(desc), names_(std::make_unique<AnimationNames>(desc)) {}
 TargetResolver::~TargetResolver() = default;
 
 std::optional<Param> TargetResolver::target(std::string_view path, std::string* error) const {
@@ -398,7 +412,9 @@ bool write_target(SceneDesc& desc, std::string_view path, std::span<const double
   return write(desc, path, value, nullptr);
 }
 
-std::vector<double> track_value(const TrackDesc& track, double frame) { return value_at(track, frame, false); }
+std::vector<double> track_value(const TrackDesc& track, double frame) {
+  return value_at(track, frame, false);
+}
 
 void apply_animation(SceneDesc& desc, double frame) {
   if (desc.animation.empty()) return;
@@ -451,7 +467,8 @@ std::vector<std::string> check_animation(const SceneDesc& desc) {
       continue;
     }
     if (const auto [first, added] = first_on.emplace(track.target, t); !added)
-      problems.push_back(at + ": animation[" + std::to_string(first->second) + "] already animates this target");
+      problems.push_back(at + ": animation[" + std::to_string(first->second) +
+                         "] already animates this target");
     const size_t width = size_t(key_width(p->kind));
     for (size_t k = 0; k < track.keys.size(); ++k) {
       const KeyDesc& key = track.keys[k];

@@ -78,7 +78,8 @@ const TrackDesc* find_track(const SceneDesc& desc, std::string_view path);
 // Sets a key at `frame` on the track of `path` to the parameter's current value (a track
 // is created when there is none, a key on that frame replaced); false when the path
 // does not resolve or cannot be keyed.
-bool insert_key(SceneDesc& desc, std::string_view path, double frame, Interpolation interp = Interpolation::bezier);
+bool insert_key(SceneDesc& desc, std::string_view path, double frame,
+                Interpolation interp = Interpolation::bezier);
 // Removes the key at `frame` (and the track when it was the last); false when there was none.
 bool delete_key(SceneDesc& desc, std::string_view path, double frame);
 

@@ -25,7 +25,7 @@ struct KeyDesc {
 };
 
 struct TrackDesc {
-  std::string target;  // "objects/NAME/transform/translate", "camera/look_from", ...
+  std::string target;         // "objects/NAME/transform/translate", "camera/look_from", ...
   std::vector<KeyDesc> keys;  // sorted by frame, at most one per frame
   bool operator==(const TrackDesc&) const = default;
 };

@@ -79,15 +79,15 @@ void walk_asset_paths(Scene& scene, const Visit& f) {
   };
   const AssetSite environment{{}, "the environment"};
   Finder{{}, environment, f}.visit_tagged("environment", scene.environment);
-  section(scene.materials, "materials", "material", [&](const std::string& at, auto& m, const AssetSite& owner) {
-    Finder{{}, owner, f}.visit_tagged(at, m.data);
-  });
-  section(scene.objects, "objects", "object",
-          [&](const std::string& at, auto& o, const AssetSite& owner) {
-            Finder finder{at, owner, f};
-            visit_params(o, finder);
-            finder.visit_tagged(at + ".shape", o.shape);
+  section(scene.materials, "materials", "material",
+          [&](const std::string& at, auto& m, const AssetSite& owner) {
+            Finder{{}, owner, f}.visit_tagged(at, m.data);
           });
+  section(scene.objects, "objects", "object", [&](const std::string& at, auto& o, const AssetSite& owner) {
+    Finder finder{at, owner, f};
+    visit_params(o, finder);
+    finder.visit_tagged(at + ".shape", o.shape);
+  });
   section(scene.lights, "lights", "light", [&](const std::string& at, auto& l, const AssetSite& owner) {
     Finder{{}, owner, f}.visit_tagged(at, l.data);
   });
@@ -103,7 +103,8 @@ void walk_asset_paths(Scene& scene, const Visit& f) {
 
 }  // namespace
 
-void for_each_asset_path(SceneDesc& scene, const std::function<void(const AssetSite&, std::string& path)>& f) {
+void for_each_asset_path(SceneDesc& scene,
+                         const std::function<void(const AssetSite&, std::string& path)>& f) {
   walk_asset_paths(scene, f);
 }
 

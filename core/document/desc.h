@@ -30,8 +30,8 @@ using MaterialVariant = std::variant<DiffuseDesc, ConductorDesc, DielectricDesc,
 
 // Per-material and per-object outline overrides.
 struct LineOverrideDesc {
-  bool exclude = false;          // produces no lines
-  bool stop_lines = false;       // mirrors/glass: lines are not followed through this surface
+  bool exclude = false;     // produces no lines
+  bool stop_lines = false;  // mirrors/glass: lines are not followed through this surface
   float width_scale = 1.f;
   bool override_color = false;
   Color color{0.f};
@@ -104,7 +104,7 @@ struct ParamTable<BoxDesc> {
 
 struct MeshDesc {
   static constexpr std::string_view type_name = "mesh";
-  std::string path;  // Wavefront OBJ, relative to the scene file
+  std::string path;           // Wavefront OBJ, relative to the scene file
   float smooth_angle = 30.f;  // degrees; normals for a file without them (geometry/mesh_normals.h)
   bool operator==(const MeshDesc&) const = default;
 };

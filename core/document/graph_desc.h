@@ -95,13 +95,16 @@ struct SocketInfo {
 
 namespace graph_detail {
 template <class T>
-concept HasLinkInputs = requires { T::link_inputs.size(); };
+concept HasLinkInputs = requires {
+  T::link_inputs.size();
+};
 
 struct InputCollector {
   std::vector<SocketInfo>* out;
   template <class F>
   void operator()(const Param& p, F&) {
-    if (const auto type = socket_type_of(p.kind)) out->push_back({p.name, *type, p.doc, Implicit::none, true, p});
+    if (const auto type = socket_type_of(p.kind))
+      out->push_back({p.name, *type, p.doc, Implicit::none, true, p});
   }
 };
 }  // namespace graph_detail
@@ -114,7 +117,8 @@ std::vector<SocketInfo> node_inputs_of() {
   graph_detail::InputCollector collector{&inputs};
   visit_params(probe, collector);
   if constexpr (graph_detail::HasLinkInputs<T>) {
-    for (const SocketDecl& s : T::link_inputs) inputs.push_back({s.name, s.type, s.doc, s.implicit, false, {}});
+    for (const SocketDecl& s : T::link_inputs)
+      inputs.push_back({s.name, s.type, s.doc, s.implicit, false, {}});
   }
   return inputs;
 }

@@ -19,13 +19,16 @@ namespace inkray {
 // ---------------------------------------------------------------- output
 struct OutputNode {
   static constexpr std::string_view type_name = "output";
-  static constexpr std::string_view doc = "The material: its surface, and optional overrides of its outlines and stroke colours.";
+  static constexpr std::string_view doc =
+      "The material: its surface, and optional overrides of its outlines and stroke colours.";
   static constexpr std::array<SocketDecl, 0> outputs = {};
   static constexpr std::array<SocketDecl, 4> link_inputs = {{
       {"surface", SocketType::closure, "The material's surface"},
-      {"line_color", SocketType::color, "Colour of outlines drawn on this surface (unlinked: the outline colour)"},
+      {"line_color", SocketType::color,
+       "Colour of outlines drawn on this surface (unlinked: the outline colour)"},
       {"line_width", SocketType::float_value, "Multiplies the outline width on this surface (unlinked: 1)"},
-      {"stroke_color", SocketType::color, "Colour stroke emitters paint this surface with (unlinked: its albedo)"},
+      {"stroke_color", SocketType::color,
+       "Colour stroke emitters paint this surface with (unlinked: its albedo)"},
   }};
   bool operator==(const OutputNode&) const = default;
 };
@@ -62,9 +65,11 @@ struct ParamTable<RgbNode> {
 // ---------------------------------------------------------------- textures
 struct ImageTextureNode {
   static constexpr std::string_view type_name = "image_texture";
-  static constexpr std::string_view doc = "An image file looked up at texture coordinates (repeating, bilinear).";
-  static constexpr std::array<SocketDecl, 2> outputs = {{{"color", SocketType::color, "Texel colour"},
-                                                          {"alpha", SocketType::float_value, "Texel alpha (1 without)"}}};
+  static constexpr std::string_view doc =
+      "An image file looked up at texture coordinates (repeating, bilinear).";
+  static constexpr std::array<SocketDecl, 2> outputs = {
+      {{"color", SocketType::color, "Texel colour"},
+       {"alpha", SocketType::float_value, "Texel alpha (1 without)"}}};
   static constexpr std::array<SocketDecl, 1> link_inputs = {
       {{"vector", SocketType::vector, "Texture coordinates (unlinked: the hit's uv)", Implicit::uv}}};
   std::string path;
@@ -83,8 +88,8 @@ struct ParamTable<ImageTextureNode> {
 struct CheckerNode {
   static constexpr std::string_view type_name = "checker_texture";
   static constexpr std::string_view doc = "A checkerboard in texture space.";
-  static constexpr std::array<SocketDecl, 2> outputs = {{{"color", SocketType::color, "Square colour"},
-                                                          {"fac", SocketType::float_value, "1 on odd squares"}}};
+  static constexpr std::array<SocketDecl, 2> outputs = {
+      {{"color", SocketType::color, "Square colour"}, {"fac", SocketType::float_value, "1 on odd squares"}}};
   static constexpr std::array<SocketDecl, 1> link_inputs = {
       {{"vector", SocketType::vector, "Texture coordinates (unlinked: the hit's uv)", Implicit::uv}}};
   Color color1{0.9f};
@@ -106,10 +111,12 @@ inline constexpr std::array<std::string_view, 2> kNoiseTypeNames = {"value", "gr
 struct NoiseNode {
   static constexpr std::string_view type_name = "noise_texture";
   static constexpr std::string_view doc = "Fractal value or gradient (Perlin) noise in 3D.";
-  static constexpr std::array<SocketDecl, 2> outputs = {{{"fac", SocketType::float_value, "Noise in [0, 1]"},
-                                                          {"color", SocketType::color, "Three decorrelated noises"}}};
+  static constexpr std::array<SocketDecl, 2> outputs = {
+      {{"fac", SocketType::float_value, "Noise in [0, 1]"},
+       {"color", SocketType::color, "Three decorrelated noises"}}};
   static constexpr std::array<SocketDecl, 1> link_inputs = {
-      {{"vector", SocketType::vector, "Where to evaluate (unlinked: the object-space position)", Implicit::position}}};
+      {{"vector", SocketType::vector, "Where to evaluate (unlinked: the object-space position)",
+        Implicit::position}}};
   NoiseType noise = NoiseType::gradient;
   int octaves = 4;
   float scale = 5.f;
@@ -131,11 +138,13 @@ struct ParamTable<NoiseNode> {
 struct VoronoiNode {
   static constexpr std::string_view type_name = "voronoi_texture";
   static constexpr std::string_view doc = "Cells around jittered points (Worley F1).";
-  static constexpr std::array<SocketDecl, 3> outputs = {{{"distance", SocketType::float_value, "To the nearest cell point"},
-                                                          {"color", SocketType::color, "Random colour per cell"},
-                                                          {"position", SocketType::vector, "The nearest cell point"}}};
+  static constexpr std::array<SocketDecl, 3> outputs = {
+      {{"distance", SocketType::float_value, "To the nearest cell point"},
+       {"color", SocketType::color, "Random colour per cell"},
+       {"position", SocketType::vector, "The nearest cell point"}}};
   static constexpr std::array<SocketDecl, 1> link_inputs = {
-      {{"vector", SocketType::vector, "Where to evaluate (unlinked: the object-space position)", Implicit::position}}};
+      {{"vector", SocketType::vector, "Where to evaluate (unlinked: the object-space position)",
+        Implicit::position}}};
   float scale = 5.f;
   float randomness = 1.f;
   bool operator==(const VoronoiNode&) const = default;
@@ -167,7 +176,8 @@ struct ParamTable<RampStopDesc> {
 struct ColorRampNode {
   static constexpr std::string_view type_name = "color_ramp";
   static constexpr std::string_view doc = "Maps a number to a colour through stops.";
-  static constexpr std::array<SocketDecl, 1> outputs = {{{"color", SocketType::color, "The ramp's colour at fac"}}};
+  static constexpr std::array<SocketDecl, 1> outputs = {
+      {{"color", SocketType::color, "The ramp's colour at fac"}}};
   float fac = 0.5f;
   RampMode interpolation = RampMode::linear;
   std::vector<RampStopDesc> stops = {{0.f, Color(0.f)}, {1.f, Color(1.f)}};
@@ -183,10 +193,22 @@ struct ParamTable<ColorRampNode> {
       row(&ColorRampNode::stops, list("stops", "Stops: {\"position\": p, \"color\": c}, in any order"))};
 };
 
-enum class MathOp { add, subtract, multiply, divide, power, minimum, maximum, clamp, smoothstep, greater_than, less_than };
+enum class MathOp {
+  add,
+  subtract,
+  multiply,
+  divide,
+  power,
+  minimum,
+  maximum,
+  clamp,
+  smoothstep,
+  greater_than,
+  less_than
+};
 inline constexpr std::array<std::string_view, 11> kMathOpNames = {
-    "add", "subtract", "multiply", "divide", "power", "minimum", "maximum", "clamp", "smoothstep", "greater_than",
-    "less_than"};
+    "add",     "subtract", "multiply",   "divide",       "power",    "minimum",
+    "maximum", "clamp",    "smoothstep", "greater_than", "less_than"};
 
 // a op b; clamp keeps a within [b, c]; smoothstep rises from b to c over a;
 // greater_than and less_than are steps (1 or 0) comparing a with b.
@@ -214,7 +236,8 @@ struct ParamTable<MathNode> {
 struct MapRangeNode {
   static constexpr std::string_view type_name = "map_range";
   static constexpr std::string_view doc = "Remaps a number from one range to another.";
-  static constexpr std::array<SocketDecl, 1> outputs = {{{"value", SocketType::float_value, "The remapped value"}}};
+  static constexpr std::array<SocketDecl, 1> outputs = {
+      {{"value", SocketType::float_value, "The remapped value"}}};
   bool clamp_result = true;
   float value = 0.5f, from_min = 0.f, from_max = 1.f, to_min = 0.f, to_max = 1.f;
   bool operator==(const MapRangeNode&) const = default;
@@ -231,7 +254,8 @@ struct ParamTable<MapRangeNode> {
 };
 
 enum class BlendOp { mix, multiply, screen, overlay, add };
-inline constexpr std::array<std::string_view, 5> kBlendOpNames = {"mix", "multiply", "screen", "overlay", "add"};
+inline constexpr std::array<std::string_view, 5> kBlendOpNames = {"mix", "multiply", "screen", "overlay",
+                                                                  "add"};
 
 struct MixColorNode {
   static constexpr std::string_view type_name = "mix_color";
@@ -255,14 +279,15 @@ struct ParamTable<MixColorNode> {
 };
 
 enum class VectorOp { add, subtract, multiply, dot, cross, normalize, length, scale };
-inline constexpr std::array<std::string_view, 8> kVectorOpNames = {"add",       "subtract", "multiply", "dot",
-                                                                   "cross",     "normalize", "length",  "scale"};
+inline constexpr std::array<std::string_view, 8> kVectorOpNames = {"add",   "subtract",  "multiply", "dot",
+                                                                   "cross", "normalize", "length",   "scale"};
 
 struct VectorMathNode {
   static constexpr std::string_view type_name = "vector_math";
   static constexpr std::string_view doc = "Arithmetic on vectors.";
-  static constexpr std::array<SocketDecl, 2> outputs = {{{"vector", SocketType::vector, "Vector results"},
-                                                          {"value", SocketType::float_value, "dot and length"}}};
+  static constexpr std::array<SocketDecl, 2> outputs = {
+      {{"vector", SocketType::vector, "Vector results"},
+       {"value", SocketType::float_value, "dot and length"}}};
   VectorOp operation = VectorOp::add;
   Vec3 a{0.f};
   Vec3 b{0.f};
@@ -281,7 +306,8 @@ struct ParamTable<VectorMathNode> {
 struct HsvNode {
   static constexpr std::string_view type_name = "hue_saturation";
   static constexpr std::string_view doc = "Shifts hue and scales saturation and value.";
-  static constexpr std::array<SocketDecl, 1> outputs = {{{"color", SocketType::color, "The adjusted colour"}}};
+  static constexpr std::array<SocketDecl, 1> outputs = {
+      {{"color", SocketType::color, "The adjusted colour"}}};
   float hue = 0.5f, saturation = 1.f, value = 1.f, fac = 1.f;
   Color color{0.8f};
   bool operator==(const HsvNode&) const = default;
@@ -302,7 +328,8 @@ inline constexpr std::array<std::string_view, 2> kColorConversionNames = {"rgb_t
 struct ConvertColorNode {
   static constexpr std::string_view type_name = "convert_color";
   static constexpr std::string_view doc = "Converts between RGB and HSV.";
-  static constexpr std::array<SocketDecl, 1> outputs = {{{"color", SocketType::color, "The converted triple"}}};
+  static constexpr std::array<SocketDecl, 1> outputs = {
+      {{"color", SocketType::color, "The converted triple"}}};
   ColorConversion conversion = ColorConversion::rgb_to_hsv;
   Color color{0.8f};
   bool operator==(const ConvertColorNode&) const = default;
@@ -318,9 +345,10 @@ struct ParamTable<ConvertColorNode> {
 struct SeparateNode {
   static constexpr std::string_view type_name = "separate";
   static constexpr std::string_view doc = "Splits a vector or colour into its components.";
-  static constexpr std::array<SocketDecl, 3> outputs = {{{"x", SocketType::float_value, "First component (red)"},
-                                                          {"y", SocketType::float_value, "Second component (green)"},
-                                                          {"z", SocketType::float_value, "Third component (blue)"}}};
+  static constexpr std::array<SocketDecl, 3> outputs = {
+      {{"x", SocketType::float_value, "First component (red)"},
+       {"y", SocketType::float_value, "Second component (green)"},
+       {"z", SocketType::float_value, "Third component (blue)"}}};
   Vec3 vector{0.f};
   bool operator==(const SeparateNode&) const = default;
 };
@@ -332,8 +360,8 @@ struct ParamTable<SeparateNode> {
 struct CombineNode {
   static constexpr std::string_view type_name = "combine";
   static constexpr std::string_view doc = "Builds a vector and a colour from three numbers.";
-  static constexpr std::array<SocketDecl, 2> outputs = {{{"vector", SocketType::vector, "(x, y, z)"},
-                                                          {"color", SocketType::color, "(x, y, z) as RGB"}}};
+  static constexpr std::array<SocketDecl, 2> outputs = {
+      {{"vector", SocketType::vector, "(x, y, z)"}, {"color", SocketType::color, "(x, y, z) as RGB"}}};
   float x = 0.f, y = 0.f, z = 0.f;
   bool operator==(const CombineNode&) const = default;
 };
@@ -348,7 +376,8 @@ struct ParamTable<CombineNode> {
 // ---------------------------------------------------------------- the hit
 struct GeometryNode {
   static constexpr std::string_view type_name = "geometry";
-  static constexpr std::string_view doc = "The hit: position, normals, uv, view, facing ratio, ids, depth, a random number per object.";
+  static constexpr std::string_view doc =
+      "The hit: position, normals, uv, view, facing ratio, ids, depth, a random number per object.";
   static constexpr std::array<SocketDecl, 11> outputs = {{
       {"position", SocketType::vector, "World-space position"},
       {"normal", SocketType::vector, "Shading normal, towards the viewer"},
@@ -360,7 +389,8 @@ struct GeometryNode {
       {"material_id", SocketType::float_value, "Index of the material in the scene"},
       {"depth", SocketType::float_value, "Distance along the path from the camera"},
       {"random", SocketType::float_value, "A random number per object in [0, 1)"},
-      {"object_position", SocketType::vector, "Position in the object's own space: fixed to the object as it moves"},
+      {"object_position", SocketType::vector,
+       "Position in the object's own space: fixed to the object as it moves"},
   }};
   bool operator==(const GeometryNode&) const = default;
 };
@@ -374,7 +404,8 @@ struct LightInputNode {
   static constexpr std::string_view type_name = "light_input";
   static constexpr std::string_view doc = "The strongest light at the hit, for cel shading by hand.";
   static constexpr std::array<SocketDecl, 3> outputs = {{
-      {"n_dot_l", SocketType::float_value, "Cosine between the normal and the strongest light (clamped at 0)"},
+      {"n_dot_l", SocketType::float_value,
+       "Cosine between the normal and the strongest light (clamped at 0)"},
       {"shadow", SocketType::float_value, "1 where the strongest light is seen, 0 in its shadow"},
       {"color", SocketType::color, "The strongest light's colour (brightest channel 1)"},
   }};
@@ -388,7 +419,8 @@ struct ParamTable<LightInputNode> {
 struct FresnelNode {
   static constexpr std::string_view type_name = "fresnel";
   static constexpr std::string_view doc = "Dielectric reflectance for the view angle.";
-  static constexpr std::array<SocketDecl, 1> outputs = {{{"fac", SocketType::float_value, "Dielectric reflectance"}}};
+  static constexpr std::array<SocketDecl, 1> outputs = {
+      {{"fac", SocketType::float_value, "Dielectric reflectance"}}};
   float ior = 1.45f;
   bool operator==(const FresnelNode&) const = default;
 };
@@ -401,8 +433,9 @@ struct ParamTable<FresnelNode> {
 struct LayerWeightNode {
   static constexpr std::string_view type_name = "layer_weight";
   static constexpr std::string_view doc = "Rim factors from the view angle.";
-  static constexpr std::array<SocketDecl, 2> outputs = {{{"fresnel", SocketType::float_value, "Fresnel-like rim"},
-                                                          {"facing", SocketType::float_value, "1 - facing ratio, shaped"}}};
+  static constexpr std::array<SocketDecl, 2> outputs = {
+      {{"fresnel", SocketType::float_value, "Fresnel-like rim"},
+       {"facing", SocketType::float_value, "1 - facing ratio, shaped"}}};
   float blend = 0.5f;
   bool operator==(const LayerWeightNode&) const = default;
 };
@@ -418,8 +451,8 @@ struct MixClosureNode {
   static constexpr std::string_view type_name = "mix_closure";
   static constexpr std::string_view doc = "Picks surface a or b per sample, b with probability fac.";
   static constexpr auto& outputs = kClosureOutputs;
-  static constexpr std::array<SocketDecl, 2> link_inputs = {{{"a", SocketType::closure, "Where fac is 0"},
-                                                              {"b", SocketType::closure, "Where fac is 1"}}};
+  static constexpr std::array<SocketDecl, 2> link_inputs = {
+      {{"a", SocketType::closure, "Where fac is 0"}, {"b", SocketType::closure, "Where fac is 1"}}};
   float fac = 0.5f;
   bool operator==(const MixClosureNode&) const = default;
 };
@@ -433,8 +466,8 @@ struct AddClosureNode {
   static constexpr std::string_view type_name = "add_closure";
   static constexpr std::string_view doc = "The sum of two surfaces.";
   static constexpr auto& outputs = kClosureOutputs;
-  static constexpr std::array<SocketDecl, 2> link_inputs = {{{"a", SocketType::closure, "One surface"},
-                                                              {"b", SocketType::closure, "The other"}}};
+  static constexpr std::array<SocketDecl, 2> link_inputs = {
+      {{"a", SocketType::closure, "One surface"}, {"b", SocketType::closure, "The other"}}};
   bool operator==(const AddClosureNode&) const = default;
 };
 template <>
@@ -443,9 +476,10 @@ struct ParamTable<AddClosureNode> {
 };
 
 using NodeVariant =
-    std::variant<OutputNode, ValueNode, RgbNode, ImageTextureNode, CheckerNode, NoiseNode, VoronoiNode, ColorRampNode,
-                 MathNode, MapRangeNode, MixColorNode, VectorMathNode, HsvNode, ConvertColorNode, SeparateNode,
-                 CombineNode, GeometryNode, LightInputNode, FresnelNode, LayerWeightNode, DiffuseDesc, ConductorDesc,
-                 DielectricDesc, EmissiveDesc, UnlitDesc, TransparentDesc, ToonDesc, MixClosureNode, AddClosureNode>;
+    std::variant<OutputNode, ValueNode, RgbNode, ImageTextureNode, CheckerNode, NoiseNode, VoronoiNode,
+                 ColorRampNode, MathNode, MapRangeNode, MixColorNode, VectorMathNode, HsvNode,
+                 ConvertColorNode, SeparateNode, CombineNode, GeometryNode, LightInputNode, FresnelNode,
+                 LayerWeightNode, DiffuseDesc, ConductorDesc, DielectricDesc, EmissiveDesc, UnlitDesc,
+                 TransparentDesc, ToonDesc, MixClosureNode, AddClosureNode>;
 
 }  // namespace inkray

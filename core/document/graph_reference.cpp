@@ -29,8 +29,7 @@ std::string value_text(const Param& p, const ColorInput& c) {
   return "a texture";
 }
 template <class E>
-  requires std::is_enum_v<E>
-std::string value_text(const Param& p, E e) {
+requires std::is_enum_v<E> std::string value_text(const Param& p, E e) {
   return size_t(e) < p.choices.size() ? "\"" + std::string(p.choices[size_t(e)]) + "\"" : "?";
 }
 template <class T>
@@ -55,8 +54,8 @@ struct Rows {
   void operator()(const Param& p, F& field) {
     const auto socket = socket_type_of(p.kind);
     const std::string kind = socket ? std::string(kSocketTypeNames[size_t(*socket)]) + " input" : "setting";
-    *out += "| `" + std::string(p.name) + "` | " + kind + " | " + value_text(p, field) + " | " + range_text(p) +
-            " | " + std::string(p.doc) + " |\n";
+    *out += "| `" + std::string(p.name) + "` | " + kind + " | " + value_text(p, field) + " | " +
+            range_text(p) + " | " + std::string(p.doc) + " |\n";
   }
 };
 
@@ -78,7 +77,8 @@ std::string_view category_of(std::string_view type) {
 std::string node_reference_markdown() {
   std::string out;
   for (std::string_view category : {"output", "input", "texture", "converter", "closure"}) {
-    out += "#### " + std::string(1, char(std::toupper(category[0]))) + std::string(category.substr(1)) + " nodes\n\n";
+    out += "#### " + std::string(1, char(std::toupper(category[0]))) + std::string(category.substr(1)) +
+           " nodes\n\n";
     for_each_alternative<NodeVariant>([&]<class T>(std::type_identity<T>) {
       if (category_of(T::type_name) != category) return;
       out += "##### `\"" + std::string(T::type_name) + "\"`\n\n" + std::string(T::doc) + "\n\n";

@@ -29,7 +29,8 @@ struct SocketDecl {
   Implicit implicit = Implicit::none;
 };
 
-inline constexpr std::array<SocketDecl, 1> kClosureOutputs = {{{"closure", SocketType::closure, "The surface"}}};
+inline constexpr std::array<SocketDecl, 1> kClosureOutputs = {
+    {{"closure", SocketType::closure, "The surface"}}};
 
 // The socket a parameter of this kind is; nullopt for settings (toggles, choices,
 // integers, lists, paths), which are edited on the node but never linked.

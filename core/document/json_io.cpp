@@ -70,8 +70,8 @@ bool read_text_file(const fs::path& file, std::string& text, std::string& reason
 
 }  // namespace
 
-SceneLoadResult parse_scene(std::string_view json_text, const fs::path& base_dir,
-                            std::string_view file_label, ReadFor purpose, const Cancel& cancel) {
+SceneLoadResult parse_scene(std::string_view json_text, const fs::path& base_dir, std::string_view file_label,
+                            ReadFor purpose, const Cancel& cancel) {
   SceneLoadResult result;
   ErrorLog log(file_label, purpose);
   try {

@@ -22,8 +22,8 @@ namespace inkray {
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t(64) << 20;
 
 struct SceneLoadResult {
-  std::optional<SceneDesc> scene;   // set when there were no errors
-  std::vector<std::string> errors;  // each a full line: "<file>: <json path>: <message>"
+  std::optional<SceneDesc> scene;     // set when there were no errors
+  std::vector<std::string> errors;    // each a full line: "<file>: <json path>: <message>"
   std::vector<std::string> warnings;  // read for editing: what stops it rendering (error_log.h)
   bool cancelled = false;
   explicit operator bool() const { return scene.has_value(); }

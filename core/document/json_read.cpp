@@ -33,9 +33,9 @@ constexpr Param kLightName = text("name", "Unique light name");
 constexpr Param kMaterialLines = group("lines", "Outline overrides for surfaces of this material");
 constexpr Param kScale = vector("scale", "Scale factors along x, y, z; applied first");
 constexpr Param kTranslate = vector("translate", "Offset applied last");
-constexpr std::string_view kTopLevelKeys[] = {"format",    "version", "camera", "render",   "environment",
-                                              "materials", "objects", "lights", "outlines", "strokes",
-                                              "animation"};
+constexpr std::string_view kTopLevelKeys[] = {"format",      "version",   "camera",   "render",
+                                              "environment", "materials", "objects",  "lights",
+                                              "outlines",    "strokes",   "animation"};
 
 // ---------------------------------------------------------------- message helpers
 std::string format_number(double x) {
@@ -212,7 +212,8 @@ bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string&
 }
 
 // Colour lists (ramps): an array of colours.
-bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, std::vector<Color>& out) {
+bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at,
+                std::vector<Color>& out) {
   if (!j.is_array() || j.size() > 256) {
     log.add(at, "expected an array of at most 256 colours, got " + describe(j));
     return false;
@@ -221,7 +222,8 @@ bool read_value(ErrorLog& log, const Param& p, const Json& j, const std::string&
   element.kind = ParamKind::color;
   std::vector<Color> colors(j.size());
   bool ok = true;
-  for (std::size_t i = 0; i < j.size(); ++i) ok &= read_value(log, element, j[i], element_path(at, i), colors[i]);
+  for (std::size_t i = 0; i < j.size(); ++i)
+    ok &= read_value(log, element, j[i], element_path(at, i), colors[i]);
   if (ok) out = std::move(colors);
   return ok;
 }
@@ -372,7 +374,8 @@ bool read_value(ErrorLog& log, const Param&, const Json& j, const std::string& a
     if (!expect_object(log, j[i], node_at, "a node object ({\"id\": ..., \"type\": ..., ...})")) continue;
     KeyList allowed;
     ParamReader{log, j[i], node_at, allowed}(kNodeId, nodes[i].id);
-    if (read_tagged(log, j[i], nodes[i].data, node_at, "node", allowed)) check_keys(log, j[i], node_at, allowed);
+    if (read_tagged(log, j[i], nodes[i].data, node_at, "node", allowed))
+      check_keys(log, j[i], node_at, allowed);
   }
   out = std::move(nodes);
   return true;
@@ -499,7 +502,8 @@ void read_header(ErrorLog& log, const Json& doc) {
 // messages; the target must therefore resolve first, against the rest of the document.
 enum class AnyChoice : int {};
 
-bool read_key_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at, std::vector<double>& out) {
+bool read_key_value(ErrorLog& log, const Param& p, const Json& j, const std::string& at,
+                    std::vector<double>& out) {
   switch (p.kind) {
     case ParamKind::number: {
       float f = 0.f;
@@ -550,14 +554,17 @@ std::vector<double> raw_key_value(const Json& j) {
 constexpr Param kKeyFrame = required(number("frame", -1e6, 1e6, "Frame of the key"));
 constexpr Param kKeyInterp = choice("interp", kInterpolationNames, "Interpolation towards the next key");
 
-void read_track(ErrorLog& log, const TargetResolver& targets, const Json& j, TrackDesc& track, const std::string& at) {
-  if (!expect_object(log, j, at, "a track ({\"target\": \"objects/NAME/transform/translate\", \"keys\": [...]})"))
+void read_track(ErrorLog& log, const TargetResolver& targets, const Json& j, TrackDesc& track,
+                const std::string& at) {
+  if (!expect_object(log, j, at,
+                     "a track ({\"target\": \"objects/NAME/transform/translate\", \"keys\": [...]})"))
     return;
   check_keys(log, j, at, {"target", "keys"});
   const auto target = j.find("target");
   if (target == j.end() || !target->is_string() || target->get_ref<const std::string&>().empty()) {
-    log.add(child_path(at, "target"), "expected a parameter path such as \"objects/ball/transform/translate\", got " +
-                                          (target == j.end() ? std::string("nothing") : describe(*target)));
+    log.add(child_path(at, "target"),
+            "expected a parameter path such as \"objects/ball/transform/translate\", got " +
+                (target == j.end() ? std::string("nothing") : describe(*target)));
     return;
   }
   track.target = target->get_ref<const std::string&>();
@@ -573,7 +580,8 @@ void read_track(ErrorLog& log, const TargetResolver& targets, const Json& j, Tra
   for (std::size_t k = 0; k < keys->size(); ++k) {
     const Json& key_json = (*keys)[k];
     const std::string key_at = element_path(keys_at, k);
-    if (!expect_object(log, key_json, key_at, "a key ({\"frame\": f, \"value\": v, \"interp\": \"bezier\"})")) continue;
+    if (!expect_object(log, key_json, key_at, "a key ({\"frame\": f, \"value\": v, \"interp\": \"bezier\"})"))
+      continue;
     check_keys(log, key_json, key_at, {"frame", "value", "interp"});
     KeyDesc key;
     const auto frame = key_json.find("frame");
@@ -647,7 +655,8 @@ void read_scene_document(const nlohmann::json& doc, const std::filesystem::path&
       !read_list(log, doc, "objects", scene.objects, read_object, cancel) ||
       !read_list(log, doc, "lights", scene.lights, read_light, cancel))
     return;
-  if (const auto it = doc.find("outlines"); it != doc.end()) read_struct(log, *it, scene.outlines, "outlines");
+  if (const auto it = doc.find("outlines"); it != doc.end())
+    read_struct(log, *it, scene.outlines, "outlines");
   const auto read_emitter = [](ErrorLog& l, const Json& j, StrokeEmitterDesc& e, const std::string& at) {
     read_struct(l, j, e, at);
   };

@@ -37,7 +37,8 @@ std::string strip_exception_prefix(std::string_view what) {
 
 class DomBuilder final : public nlohmann::json_sax<Json> {
  public:
-  DomBuilder(std::string_view text, ErrorLog& log, const Cancel& cancel) : text_(text), log_(log), cancel_(cancel) {}
+  DomBuilder(std::string_view text, ErrorLog& log, const Cancel& cancel)
+      : text_(text), log_(log), cancel_(cancel) {}
 
   Json take_root() { return std::move(root_); }
 
@@ -152,7 +153,8 @@ class DomBuilder final : public nlohmann::json_sax<Json> {
 
 }  // namespace
 
-std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log, const Cancel& cancel) {
+std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log,
+                                                  const Cancel& cancel) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     log.add("", "the file is empty (expected a JSON object)");
     return std::nullopt;

@@ -22,7 +22,8 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 // are logged without stopping, so the reader can report the file's other problems too.
 // A 60 MB scene takes seconds to parse: `cancel` is checked every few thousand values
 // and stops it with kCancelledReading logged.
-std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log, const Cancel& cancel = {});
+std::optional<nlohmann::json> parse_json_document(std::string_view text, ErrorLog& log,
+                                                  const Cancel& cancel = {});
 
 inline constexpr std::string_view kCancelledReading = "cancelled while reading the scene";
 

@@ -19,9 +19,9 @@ namespace inkray {
 // ---------------------------------------------------------------- colour inputs
 struct ImageTextureDesc {
   static constexpr std::string_view type_name = "image";
-  std::string path;     // relative to the scene file; PNG/JPEG/HDR through stb
-  Color scale{1.f};     // multiplies the texel
-  bool srgb = true;     // 8-bit images are sRGB-encoded unless told otherwise
+  std::string path;  // relative to the scene file; PNG/JPEG/HDR through stb
+  Color scale{1.f};  // multiplies the texel
+  bool srgb = true;  // 8-bit images are sRGB-encoded unless told otherwise
   bool operator==(const ImageTextureDesc&) const = default;
 };
 template <>
@@ -71,8 +71,8 @@ struct ConductorDesc {
   static constexpr std::string_view type_name = "conductor";
   static constexpr std::string_view doc = "A metal: GGX microfacets, mirror at roughness 0.";
   static constexpr auto& outputs = kClosureOutputs;  // a closure node in graphs
-  ColorInput color = Color(0.95f);  // reflectance at normal incidence (F0)
-  float roughness = 0.f;            // GGX, perceptual: alpha = roughness^2; 0 is a mirror
+  ColorInput color = Color(0.95f);                   // reflectance at normal incidence (F0)
+  float roughness = 0.f;                             // GGX, perceptual: alpha = roughness^2; 0 is a mirror
   bool operator==(const ConductorDesc&) const = default;
 };
 template <>
@@ -153,11 +153,12 @@ inline constexpr std::array<std::string_view, 3> kToonRampAxisNames = {"none", "
 
 struct ToonDesc : ToonParams {
   static constexpr std::string_view type_name = "toon";
-  static constexpr std::string_view doc = "Cel shading: light quantised into bands or a ramp, a specular band and a rim.";
+  static constexpr std::string_view doc =
+      "Cel shading: light quantised into bands or a ramp, a specular band and a rim.";
   static constexpr auto& outputs = kClosureOutputs;  // a closure node in graphs
-  ColorInput color = Color(0.8f);  // lit colour
-  std::vector<Color> ramp;         // when non-empty: light level -> colour, evenly spaced stops
-  std::string ramp_image;          // optional 2D ramp (X-toon): u = light, v = ramp_axis
+  ColorInput color = Color(0.8f);                    // lit colour
+  std::vector<Color> ramp;  // when non-empty: light level -> colour, evenly spaced stops
+  std::string ramp_image;   // optional 2D ramp (X-toon): u = light, v = ramp_axis
   bool operator==(const ToonDesc&) const = default;
 };
 template <>

@@ -60,7 +60,6 @@ struct Estimator {
     estimate.texels += size->texels();
     add(at, std::uint64_t(size->texels()) * bytes_per_texel);
   }
-
 };
 
 }  // namespace

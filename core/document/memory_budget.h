@@ -25,7 +25,7 @@ struct MemoryItem {
 
 struct MemoryEstimate {
   std::uint64_t total = 0;
-  long long texels = 0;          // decoded image texels, all images together
+  long long texels = 0;           // decoded image texels, all images together
   std::vector<MemoryItem> items;  // largest first
 };
 

@@ -42,7 +42,7 @@ struct ParamTable<LineStyleDesc> {
 };
 
 struct OutlineDesc {
-  int quality = 1;  // stencil rays per camera sample
+  int quality = 1;       // stencil rays per camera sample
   bool adaptive = true;  // trace stencil rays only where lines are still uncertain
   float width = 2.f;
   LineWidthUnit unit = LineWidthUnit::pixels;
@@ -124,7 +124,7 @@ struct StrokeEmitterDesc {
   int count = 1000;
   float width_min = 0.02f, width_max = 0.05f;  // world units
   float length_min = 0.1f, length_max = 0.25f;
-  Vec3 flow{0.f, 1.f, 0.f};     // projected on the tangent plane
+  Vec3 flow{0.f, 1.f, 0.f};      // projected on the tangent plane
   float rotation_jitter = 15.f;  // degrees
   float hue_jitter = 8.f;        // degrees
   float saturation_jitter = 0.1f;

@@ -40,10 +40,16 @@ void append_key(std::string& key, const T& value) {
   if constexpr (std::is_same_v<T, std::string>) {
     append_bytes(key, value.size());
     key += value;
-  } else if constexpr (requires { value.index(); std::visit([](const auto&) {}, value); }) {
+  } else if constexpr (requires {
+                         value.index();
+                         std::visit([](const auto&) {}, value);
+                       }) {
     append_bytes(key, value.index());
     std::visit([&](const auto& alternative) { append_key(key, alternative); }, value);
-  } else if constexpr (requires { value.begin(); value.size(); }) {
+  } else if constexpr (requires {
+                         value.begin();
+                         value.size();
+                       }) {
     append_bytes(key, value.size());
     for (const auto& item : value) append_key(key, item);
   } else if constexpr (ParamGroup<T>) {

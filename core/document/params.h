@@ -14,21 +14,21 @@
 namespace inkray {
 
 enum class ParamKind {
-  number,     // float
-  integer,    // int
-  toggle,     // bool
-  point,      // Point3
-  direction,  // Vec3, normalised when used
-  vector,     // Vec3 (scale, edge vectors)
-  color,      // Color, linear RGB
+  number,       // float
+  integer,      // int
+  toggle,       // bool
+  point,        // Point3
+  direction,    // Vec3, normalised when used
+  vector,       // Vec3 (scale, edge vectors)
+  color,        // Color, linear RGB
   color_input,  // ColorInput: constant colour, image texture or checker
-  text,       // std::string (names, references)
-  path,       // std::string, a file path relative to the scene file
-  choice,     // an enum with a name table
-  color_list, // std::vector<Color>, e.g. a colour ramp
-  group,      // a nested struct with its own parameter table (a JSON object)
-  list,       // std::vector of a struct with its own parameter table (a JSON array of objects)
-  nodes,      // a material graph's nodes (graph_desc.h): a JSON array of tagged objects with ids
+  text,         // std::string (names, references)
+  path,         // std::string, a file path relative to the scene file
+  choice,       // an enum with a name table
+  color_list,   // std::vector<Color>, e.g. a colour ramp
+  group,        // a nested struct with its own parameter table (a JSON object)
+  list,         // std::vector of a struct with its own parameter table (a JSON array of objects)
+  nodes,        // a material graph's nodes (graph_desc.h): a JSON array of tagged objects with ids
 };
 
 // Every position, offset and edge vector stays within this distance of the origin.
@@ -55,7 +55,8 @@ enum class Stage : unsigned char {
 };
 inline constexpr int kStageCount = int(Stage::strokes) + 1;
 inline constexpr std::array<std::string_view, kStageCount> kStageNames = {
-    "inherit", "layout", "limits", "resolve", "camera", "sampling", "film", "material", "light", "object", "geometry", "strokes"};
+    "inherit", "layout",   "limits", "resolve", "camera",   "sampling",
+    "film",    "material", "light",  "object",  "geometry", "strokes"};
 
 // What a text parameter names: the editor offers the names that exist.
 enum class Ref : unsigned char { none, material, object, light };
@@ -122,7 +123,9 @@ constexpr Param toggle(std::string_view name, std::string_view doc) { return {na
 constexpr Param point(std::string_view name, std::string_view doc) {
   return {name, doc, ParamKind::point, -kMaxCoordinate, kMaxCoordinate};
 }
-constexpr Param direction(std::string_view name, std::string_view doc) { return {name, doc, ParamKind::direction}; }
+constexpr Param direction(std::string_view name, std::string_view doc) {
+  return {name, doc, ParamKind::direction};
+}
 constexpr Param vector(std::string_view name, std::string_view doc) {
   return {name, doc, ParamKind::vector, -kMaxCoordinate, kMaxCoordinate};
 }

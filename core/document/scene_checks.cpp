@@ -47,7 +47,8 @@ struct AssetCollector {
     std::visit(
         [&]<class A>(const A& alternative) {
           if constexpr (Tagged<A>) {
-            AssetCollector collector{path, out, std::is_same_v<A, MeshDesc> ? AssetKind::mesh : AssetKind::image};
+            AssetCollector collector{path, out,
+                                     std::is_same_v<A, MeshDesc> ? AssetKind::mesh : AssetKind::image};
             visit_params(alternative, collector);
           }
         },
@@ -111,9 +112,9 @@ void check_unique_names(const std::vector<Item>& items, std::string_view section
     if (items[i].name.empty()) continue;  // reported by the reader as missing or invalid
     const auto [it, inserted] = first_use.emplace(items[i].name, i);
     if (!inserted) {
-      log.add_unrenderable(element_path(section, i) + ".name", "duplicate " + std::string(noun) + " name " +
-                                                      in_quotes(items[i].name) + " (also used by " +
-                                                      element_path(section, it->second) + ")");
+      log.add_unrenderable(element_path(section, i) + ".name",
+                           "duplicate " + std::string(noun) + " name " + in_quotes(items[i].name) +
+                               " (also used by " + element_path(section, it->second) + ")");
     }
   }
 }
@@ -144,7 +145,8 @@ void check_material_references(const SceneDesc& scene, ErrorLog& log) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const std::string& name = scene.objects[i].material;
     if (!name.empty() && !names.contains(name)) {
-      log.add_unrenderable(element_path("objects", i) + ".material", "no material named " + in_quotes(name) + known);
+      log.add_unrenderable(element_path("objects", i) + ".material",
+                           "no material named " + in_quotes(name) + known);
     }
   }
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
@@ -152,7 +154,8 @@ void check_material_references(const SceneDesc& scene, ErrorLog& log) {
     if (!mix) continue;
     for (const auto& [key, name] : {std::pair{".a", &mix->a}, std::pair{".b", &mix->b}}) {
       if (!name->empty() && !names.contains(*name))
-        log.add_unrenderable(element_path("materials", i) + key, "no material named " + in_quotes(*name) + known);
+        log.add_unrenderable(element_path("materials", i) + key,
+                             "no material named " + in_quotes(*name) + known);
     }
   }
 }
@@ -210,7 +213,8 @@ void check_mix_cycles(const SceneDesc& scene, ErrorLog& log) {
       if (state[std::size_t(target)] != open) continue;
       const std::string at = element_path("materials", std::size_t(node)) + (side == 0 ? ".a" : ".b");
       if (target == node) {
-        log.add_unrenderable(at, "mix " + in_quotes(scene.materials[std::size_t(node)].name) + " refers to itself");
+        log.add_unrenderable(
+            at, "mix " + in_quotes(scene.materials[std::size_t(node)].name) + " refers to itself");
         continue;
       }
       std::string chain;
@@ -218,7 +222,7 @@ void check_mix_cycles(const SceneDesc& scene, ErrorLog& log) {
       for (; from != stack.end(); ++from)
         chain += in_quotes(scene.materials[std::size_t(from->node)].name) + " -> ";
       log.add_unrenderable(at, "mixes refer to each other in a cycle: " + chain +
-                      in_quotes(scene.materials[std::size_t(target)].name));
+                                   in_quotes(scene.materials[std::size_t(target)].name));
     }
   }
 }
@@ -240,21 +244,22 @@ void check_strokes(const SceneDesc& scene, ErrorLog& log) {
     if (e.brush == BrushKind::image && e.brush_image.empty())
       log.add_unrenderable(at + ".brush_image", "required when brush is \"image\"");
     if (e.width_min > e.width_max)
-      log.add_unrenderable(at + ".width_min",
-              "must not exceed width_max (" + shown(e.width_min) + " > " + shown(e.width_max) + ")");
+      log.add_unrenderable(at + ".width_min", "must not exceed width_max (" + shown(e.width_min) + " > " +
+                                                  shown(e.width_max) + ")");
     if (e.length_min > e.length_max)
-      log.add_unrenderable(at + ".length_min",
-              "must not exceed length_max (" + shown(e.length_min) + " > " + shown(e.length_max) + ")");
+      log.add_unrenderable(at + ".length_min", "must not exceed length_max (" + shown(e.length_min) + " > " +
+                                                   shown(e.length_max) + ")");
   }
   // One budget across emitters: each may be modest and all of them together not.
   long long vertices = 0;
   for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
     vertices += stroke_vertex_count(scene.strokes[i]);
     if (vertices > kMaxStrokeVertices) {
-      log.add_unrenderable(element_path("strokes", i) + ".count",
-              "the strokes up to this emitter need " + std::to_string(vertices) +
-                  " vertices (count x 2 x (segments + 1), summed over emitters); a scene may have at most " +
-                  std::to_string(kMaxStrokeVertices) + " (about 6 GiB of memory)");
+      log.add_unrenderable(
+          element_path("strokes", i) + ".count",
+          "the strokes up to this emitter need " + std::to_string(vertices) +
+              " vertices (count x 2 x (segments + 1), summed over emitters); a scene may have at most " +
+              std::to_string(kMaxStrokeVertices) + " (about 6 GiB of memory)");
       break;
     }
   }
@@ -295,7 +300,8 @@ void check_degenerate_directions(const SceneDesc& scene, ErrorLog& log) {
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const auto* spot = std::get_if<SpotLightDesc>(&scene.lights[i].data);
     if (spot && glm::length(spot->target - spot->position) == 0.f)
-      log.add_unrenderable("lights[" + std::to_string(i) + "].target", "must differ from the spot light's position");
+      log.add_unrenderable("lights[" + std::to_string(i) + "].target",
+                           "must differ from the spot light's position");
   }
 }
 
@@ -303,9 +309,9 @@ void check_scene(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log
   const long long pixels = static_cast<long long>(scene.render.width) * scene.render.height;
   if (pixels > kMaxImagePixels) {
     log.add_unrenderable("render", "image size " + std::to_string(scene.render.width) + " x " +
-                          std::to_string(scene.render.height) + " = " + std::to_string(pixels) +
-                          " pixels is over the limit of " + std::to_string(kMaxImagePixels) +
-                          " (8192 x 8192)");
+                                       std::to_string(scene.render.height) + " = " + std::to_string(pixels) +
+                                       " pixels is over the limit of " + std::to_string(kMaxImagePixels) +
+                                       " (8192 x 8192)");
   }
   check_unique_names(scene.materials, "materials", "material", log);
   check_unique_names(scene.objects, "objects", "object", log);

@@ -41,8 +41,8 @@ void name_unnamed(SceneDesc& scene);
 // Reports duplicate material, object, light and stroke emitter names, objects and
 // mixes naming a material that does not exist, mixes that refer to themselves
 // (directly or through other mixes), stroke emitters on a missing object or with
-// min above max, more than kMaxStrokeVertices stroke vertices, asset paths (textures, meshes, toon ramps, used brush images)
-// that are not regular files relative to base_dir, and an image larger than
+// min above max, more than kMaxStrokeVertices stroke vertices, asset paths (textures, meshes, toon ramps,
+// used brush images) that are not regular files relative to base_dir, and an image larger than
 // kMaxImagePixels. Paths in messages are JSON paths.
 // All of these leave the document whole, so they are ErrorLog::add_unrenderable
 // problems (warnings when it is read for editing), but a path with a NUL.

@@ -52,9 +52,8 @@ StageSet changed_stages(const SceneDesc& before, const SceneDesc& after) {
   diff_list(before.objects, after.objects, Stage::object, out,
             [](const ObjectDesc& a, const ObjectDesc& b) { return changed_stages(a, b); });
   diff_list(before.lights, after.lights, Stage::light, out, light_changes);
-  diff_list(before.strokes, after.strokes, Stage::strokes, out, [](const auto& a, const auto& b) {
-    return changed_stages(a, b, Stage::strokes);
-  });
+  diff_list(before.strokes, after.strokes, Stage::strokes, out,
+            [](const auto& a, const auto& b) { return changed_stages(a, b, Stage::strokes); });
   return out;
 }
 

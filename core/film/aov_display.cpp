@@ -9,7 +9,8 @@ namespace inkray {
 RgbImage aov_for_display(Aov aov, const RgbImage& raw) {
   RgbImage out = raw;
   switch (aov) {
-    case Aov::albedo: break;
+    case Aov::albedo:
+      break;
     case Aov::normal:
       for (Color& c : out.pixels)
         if (c != Color(0.f)) c = 0.5f * c + Color(0.5f);
@@ -31,13 +32,15 @@ RgbImage aov_for_display(Aov aov, const RgbImage& raw) {
           continue;
         }
         const uint32_t h = hash_u32(uint32_t(c.x) + 1u);
-        c = Color(0.2f) + 0.8f * Color(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u)) / 255.f;
+        c = Color(0.2f) +
+            0.8f * Color(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u)) / 255.f;
       }
       break;
     case Aov::toon_band:  // -1 off toon surfaces, else up to 7 (film.h): grey steps, black elsewhere
       for (Color& c : out.pixels) c = Color(glm::clamp((c.x + 1.f) / 8.f, 0.f, 1.f));
       break;
-    default: break;  // outline opacities are already in [0, 1]
+    default:
+      break;  // outline opacities are already in [0, 1]
   }
   return out;
 }

@@ -18,17 +18,17 @@
 namespace inkray {
 namespace {
 
-constexpr int kLevels = 5;             // a-trous passes: steps 1, 2, 4, 8, 16 (a 63-pixel reach)
-constexpr float kSigmaColor = 4.f;     // a neighbour this many standard deviations off weighs e^-1
-constexpr float kSigmaDepth = 2.f;     // depth difference allowed over the expected slope
-constexpr float kAlbedoScale = 20.f;   // 1/sigma^2 of the albedo difference
-constexpr float kBandTolerance = 0.1f; // toon band values farther apart are different bands
+constexpr int kLevels = 5;              // a-trous passes: steps 1, 2, 4, 8, 16 (a 63-pixel reach)
+constexpr float kSigmaColor = 4.f;      // a neighbour this many standard deviations off weighs e^-1
+constexpr float kSigmaDepth = 2.f;      // depth difference allowed over the expected slope
+constexpr float kAlbedoScale = 20.f;    // 1/sigma^2 of the albedo difference
+constexpr float kBandTolerance = 0.1f;  // toon band values farther apart are different bands
 constexpr float kDemodulateEps = 0.02f;
-constexpr int kErrorRadius = 4;        // the cross-validation error is averaged over 9 x 9 pixels
+constexpr int kErrorRadius = 4;  // the cross-validation error is averaged over 9 x 9 pixels
 
 // What the weights read of a pixel.
 struct Guide {
-  Vec3 normal{0.f};    // unit; zero where nothing was hit
+  Vec3 normal{0.f};                // unit; zero where nothing was hit
   float depth = 0.f, slope = 0.f;  // slope: expected |depth change| per pixel step
   Color albedo{0.f};
   Color divisor{1.f};  // demodulation: radiance / divisor is filtered, then multiplied back
@@ -58,58 +58,69 @@ float pow32(float x) {
 std::vector<float> box_blur(const std::vector<float>& v, int w, int h, int r, ThreadBudget* pool,
                             const Cancel& cancel) {
   std::vector<float> tmp(v.size()), out(v.size());
-  parallel_rows(h, pool, [&](int y) {
-    const float* row = &v[size_t(y) * size_t(w)];
-    for (int x = 0; x < w; ++x) {
-      float s = 0.f;
-      int n = 0;
-      for (int k = std::max(0, x - r); k <= std::min(w - 1, x + r); ++k, ++n) s += row[k];
-      tmp[size_t(y) * size_t(w) + size_t(x)] = s / float(n);
-    }
-  }, cancel);
-  parallel_rows(h, pool, [&](int y) {
-    for (int x = 0; x < w; ++x) {
-      float s = 0.f;
-      int n = 0;
-      for (int k = std::max(0, y - r); k <= std::min(h - 1, y + r); ++k, ++n) s += tmp[size_t(k) * size_t(w) + size_t(x)];
-      out[size_t(y) * size_t(w) + size_t(x)] = s / float(n);
-    }
-  }, cancel);
+  parallel_rows(
+      h, pool,
+      [&](int y) {
+        const float* row = &v[size_t(y) * size_t(w)];
+        for (int x = 0; x < w; ++x) {
+          float s = 0.f;
+          int n = 0;
+          for (int k = std::max(0, x - r); k <= std::min(w - 1, x + r); ++k, ++n) s += row[k];
+          tmp[size_t(y) * size_t(w) + size_t(x)] = s / float(n);
+        }
+      },
+      cancel);
+  parallel_rows(
+      h, pool,
+      [&](int y) {
+        for (int x = 0; x < w; ++x) {
+          float s = 0.f;
+          int n = 0;
+          for (int k = std::max(0, y - r); k <= std::min(h - 1, y + r); ++k, ++n)
+            s += tmp[size_t(k) * size_t(w) + size_t(x)];
+          out[size_t(y) * size_t(w) + size_t(x)] = s / float(n);
+        }
+      },
+      cancel);
   return out;
 }
 
-std::vector<Guide> make_guides(const Film& film, const Features& f, ThreadBudget* pool, const Cancel& cancel) {
+std::vector<Guide> make_guides(const Film& film, const Features& f, ThreadBudget* pool,
+                               const Cancel& cancel) {
   const int w = film.width(), h = film.height();
   const size_t n = size_t(w) * size_t(h);
   std::vector<Guide> g(n);
   const RgbImage albedo = film.resolve_aov(Aov::albedo), normal = film.resolve_aov(Aov::normal),
                  depth = film.resolve_aov(Aov::depth), band = film.resolve_aov(Aov::toon_band),
                  object = film.resolve_aov(Aov::object_id), material = film.resolve_aov(Aov::material_id);
-  parallel_rows(h, pool, [&](int y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * size_t(w) + size_t(x);
-      Guide& p = g[i];
-      const FilmPixel fp = film.pixel(x, y);
-      p.sampled = fp.count[0] > 0 && fp.count[1] > 0;
-      if (p.sampled) {
-        const glm::dvec3 a = fp.sum[0] / double(fp.count[0]), b = fp.sum[1] / double(fp.count[1]);
-        p.exact = a == b && a != glm::dvec3(0.0);
-      }
-      // An anti-aliased edge's samples saw two ids: it lends to and borrows from
-      // other edge pixels only, so it is smoothed along the edge, not into either side.
-      if (f.object) p.object = (fp.ids_mixed & 1u) ? -3 : int(object.pixels[i].x);
-      if (f.material) p.material = (fp.ids_mixed & 2u) ? -3 : int(material.pixels[i].x);
-      if (f.band) p.band = band.pixels[i].x;
-      const float len = glm::length(normal.pixels[i]);
-      if (f.normal && len > 0.f) p.normal = normal.pixels[i] / len;
-      if (f.depth) p.depth = depth.pixels[i].x;
-      if (f.albedo) {
-        p.albedo = albedo.pixels[i];
-        // Nothing hit, or black: nothing to divide by, the radiance is filtered as it is.
-        if (max_component(p.albedo) > 0.f) p.divisor = p.albedo + Color(kDemodulateEps);
-      }
-    }
-  }, cancel);
+  parallel_rows(
+      h, pool,
+      [&](int y) {
+        for (int x = 0; x < w; ++x) {
+          const size_t i = size_t(y) * size_t(w) + size_t(x);
+          Guide& p = g[i];
+          const FilmPixel fp = film.pixel(x, y);
+          p.sampled = fp.count[0] > 0 && fp.count[1] > 0;
+          if (p.sampled) {
+            const glm::dvec3 a = fp.sum[0] / double(fp.count[0]), b = fp.sum[1] / double(fp.count[1]);
+            p.exact = a == b && a != glm::dvec3(0.0);
+          }
+          // An anti-aliased edge's samples saw two ids: it lends to and borrows from
+          // other edge pixels only, so it is smoothed along the edge, not into either side.
+          if (f.object) p.object = (fp.ids_mixed & 1u) ? -3 : int(object.pixels[i].x);
+          if (f.material) p.material = (fp.ids_mixed & 2u) ? -3 : int(material.pixels[i].x);
+          if (f.band) p.band = band.pixels[i].x;
+          const float len = glm::length(normal.pixels[i]);
+          if (f.normal && len > 0.f) p.normal = normal.pixels[i] / len;
+          if (f.depth) p.depth = depth.pixels[i].x;
+          if (f.albedo) {
+            p.albedo = albedo.pixels[i];
+            // Nothing hit, or black: nothing to divide by, the radiance is filtered as it is.
+            if (max_component(p.albedo) > 0.f) p.divisor = p.albedo + Color(kDemodulateEps);
+          }
+        }
+      },
+      cancel);
   // A pixel between two edge pixels (along a row, a column or a diagonal) is on the edge
   // too, whichever ids its own samples happened to draw: under a lamp's rim a pixel whose
   // samples all missed the rim's few percent is otherwise cut off from the ones that drew
@@ -171,7 +182,8 @@ struct FeatureWeight {
 FeatureWeight feature_weight(const Guide& p, const Guide& q, int step) {
   float wn = 1.f;
   if (p.normal != Vec3(0.f) || q.normal != Vec3(0.f)) wn = pow32(std::max(0.f, glm::dot(p.normal, q.normal)));
-  const float dz = std::abs(p.depth - q.depth) / (kSigmaDepth * p.slope * float(step) + 1e-3f * p.depth + 1e-6f);
+  const float dz =
+      std::abs(p.depth - q.depth) / (kSigmaDepth * p.slope * float(step) + 1e-3f * p.depth + 1e-6f);
   const Color da = p.albedo - q.albedo;
   return {wn, dz + kAlbedoScale * glm::dot(da, da)};
 }
@@ -189,7 +201,7 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
   const int w = film.width(), h = film.height();
   const size_t n = size_t(w) * size_t(h);
   const AovSet& has = film.aovs();
-  const Features f{has.has(Aov::normal),    has.has(Aov::depth),       has.has(Aov::albedo),
+  const Features f{has.has(Aov::normal),    has.has(Aov::depth),     has.has(Aov::albedo),
                    has.has(Aov::toon_band), has.has(Aov::object_id), has.has(Aov::material_id)};
   const std::vector<Guide> g = make_guides(film, f, pool, cancel);
 
@@ -199,24 +211,27 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
   std::array<std::vector<float>, 2> var{std::vector<float>(n, 0.f), std::vector<float>(n, 0.f)};
   std::vector<Color> raw_a(n, Color(0.f)), raw_b(n, Color(0.f));
   std::vector<float> share_a(n, 0.5f);  // half a's share of the pixel's samples
-  parallel_rows(h, pool, [&](int y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * size_t(w) + size_t(x);
-      const FilmPixel fp = film.pixel(x, y);
-      if (!g[i].sampled) {
-        const uint32_t c = fp.count[0] + fp.count[1];
-        raw_a[i] = raw_b[i] = c ? Color((fp.sum[0] + fp.sum[1]) / double(c)) : Color(0.f);
-        continue;
-      }
-      raw_a[i] = Color(fp.sum[0] / double(fp.count[0]));
-      raw_b[i] = Color(fp.sum[1] / double(fp.count[1]));
-      share_a[i] = float(double(fp.count[0]) / double(fp.count[0] + fp.count[1]));
-      cur[0][i] = raw_a[i] / g[i].divisor;
-      cur[1][i] = raw_b[i] / g[i].divisor;
-      const float d = luminance(cur[0][i] - cur[1][i]);
-      var[0][i] = var[1][i] = 0.5f * d * d;
-    }
-  }, cancel);
+  parallel_rows(
+      h, pool,
+      [&](int y) {
+        for (int x = 0; x < w; ++x) {
+          const size_t i = size_t(y) * size_t(w) + size_t(x);
+          const FilmPixel fp = film.pixel(x, y);
+          if (!g[i].sampled) {
+            const uint32_t c = fp.count[0] + fp.count[1];
+            raw_a[i] = raw_b[i] = c ? Color((fp.sum[0] + fp.sum[1]) / double(c)) : Color(0.f);
+            continue;
+          }
+          raw_a[i] = Color(fp.sum[0] / double(fp.count[0]));
+          raw_b[i] = Color(fp.sum[1] / double(fp.count[1]));
+          share_a[i] = float(double(fp.count[0]) / double(fp.count[0] + fp.count[1]));
+          cur[0][i] = raw_a[i] / g[i].divisor;
+          cur[1][i] = raw_b[i] / g[i].divisor;
+          const float d = luminance(cur[0][i] - cur[1][i]);
+          var[0][i] = var[1][i] = 0.5f * d * d;
+        }
+      },
+      cancel);
 
   // Rung 0: the raw mean. Its cross-validation error is 2 (a - b)^2.
   Denoised result;
@@ -243,80 +258,90 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
       sd[half] = box_blur(var[half], w, h, 1, pool, cancel);
       for (float& s : sd[half]) s = kSigmaColor * std::sqrt(s) + 1e-6f;
     }
-    const bool done = parallel_rows(h, pool, [&](int y) {
-      for (int x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * size_t(w) + size_t(x);
-        const Guide& p = g[i];
-        if (!p.sampled || p.exact) {
-          for (int half = 0; half < 2; ++half) next[half][i] = cur[half][i], next_var[half][i] = var[half][i];
-          continue;
-        }
-        std::array<Color, 2> sum;
-        std::array<float, 2> wsum, vsum, lp;
-        for (int half = 0; half < 2; ++half) {
-          const float k = kKernel[1] * kKernel[1];
-          sum[half] = k * cur[half][i];
-          wsum[half] = k;
-          vsum[half] = k * k * var[half][i];
-          lp[half] = luminance(cur[half][i]);
-        }
-        for (int dy = -1; dy <= 1; ++dy) {
-          const int qy = y + dy * step;
-          if (qy < 0 || qy >= h) continue;
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int qx = x + dx * step;
-            if ((dx == 0 && dy == 0) || qx < 0 || qx >= w) continue;
-            const size_t j = size_t(qy) * size_t(w) + size_t(qx);
-            const Guide& q = g[j];
-            if (!same_region(p, q)) continue;
-            const FeatureWeight fw = feature_weight(p, q, step);
-            const float wf = kKernel[dx + 1] * kKernel[dy + 1] * fw.factor;
-            if (!(wf > 1e-6f) || !(fw.exponent < 14.f)) continue;  // e^-14: under 1e-6
+    const bool done = parallel_rows(
+        h, pool,
+        [&](int y) {
+          for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * size_t(w) + size_t(x);
+            const Guide& p = g[i];
+            if (!p.sampled || p.exact) {
+              for (int half = 0; half < 2; ++half)
+                next[half][i] = cur[half][i], next_var[half][i] = var[half][i];
+              continue;
+            }
+            std::array<Color, 2> sum;
+            std::array<float, 2> wsum, vsum, lp;
             for (int half = 0; half < 2; ++half) {
-              const float wc =
-                  wf * std::exp(-fw.exponent - std::abs(lp[half] - luminance(cur[half][j])) / sd[half][i]);
-              sum[half] += wc * cur[half][j];
-              wsum[half] += wc;
-              vsum[half] += wc * wc * var[half][j];
+              const float k = kKernel[1] * kKernel[1];
+              sum[half] = k * cur[half][i];
+              wsum[half] = k;
+              vsum[half] = k * k * var[half][i];
+              lp[half] = luminance(cur[half][i]);
+            }
+            for (int dy = -1; dy <= 1; ++dy) {
+              const int qy = y + dy * step;
+              if (qy < 0 || qy >= h) continue;
+              for (int dx = -1; dx <= 1; ++dx) {
+                const int qx = x + dx * step;
+                if ((dx == 0 && dy == 0) || qx < 0 || qx >= w) continue;
+                const size_t j = size_t(qy) * size_t(w) + size_t(qx);
+                const Guide& q = g[j];
+                if (!same_region(p, q)) continue;
+                const FeatureWeight fw = feature_weight(p, q, step);
+                const float wf = kKernel[dx + 1] * kKernel[dy + 1] * fw.factor;
+                if (!(wf > 1e-6f) || !(fw.exponent < 14.f)) continue;  // e^-14: under 1e-6
+                for (int half = 0; half < 2; ++half) {
+                  const float wc = wf * std::exp(-fw.exponent -
+                                                 std::abs(lp[half] - luminance(cur[half][j])) / sd[half][i]);
+                  sum[half] += wc * cur[half][j];
+                  wsum[half] += wc;
+                  vsum[half] += wc * wc * var[half][j];
+                }
+              }
+            }
+            for (int half = 0; half < 2; ++half) {
+              next[half][i] = sum[half] / wsum[half];
+              next_var[half][i] = vsum[half] / (wsum[half] * wsum[half]);
             }
           }
-        }
-        for (int half = 0; half < 2; ++half) {
-          next[half][i] = sum[half] / wsum[half];
-          next_var[half][i] = vsum[half] / (wsum[half] * wsum[half]);
-        }
-      }
-    }, cancel);
+        },
+        cancel);
     if (!done) return {};
     std::swap(cur, next);
     std::swap(var, next_var);
 
     // Cross-validation: this rung of half a against raw half b, and the other way.
-    parallel_rows(h, pool, [&](int y) {
-      for (size_t i = size_t(y) * size_t(w); i < size_t(y + 1) * size_t(w); ++i) {
-        if (!g[i].sampled) {
-          err[i] = 0.f;
-          continue;
-        }
-        const float fa = luminance(cur[0][i] * g[i].divisor), fb = luminance(cur[1][i] * g[i].divisor);
-        const float ea = fa - luminance(raw_b[i]), eb = fb - luminance(raw_a[i]);
-        err[i] = ea * ea + eb * eb;
-      }
-    }, cancel);
+    parallel_rows(
+        h, pool,
+        [&](int y) {
+          for (size_t i = size_t(y) * size_t(w); i < size_t(y + 1) * size_t(w); ++i) {
+            if (!g[i].sampled) {
+              err[i] = 0.f;
+              continue;
+            }
+            const float fa = luminance(cur[0][i] * g[i].divisor), fb = luminance(cur[1][i] * g[i].divisor);
+            const float ea = fa - luminance(raw_b[i]), eb = fb - luminance(raw_a[i]);
+            err[i] = ea * ea + eb * eb;
+          }
+        },
+        cancel);
     const std::vector<float> smoothed = box_blur(err, w, h, kErrorRadius, pool, cancel);
     if (cancel.requested()) return {};
-    parallel_rows(h, pool, [&](int y) {
-      for (size_t i = size_t(y) * size_t(w); i < size_t(y + 1) * size_t(w); ++i) {
-        if (!g[i].sampled || !(smoothed[i] < best_smoothed[i])) continue;
-        best_smoothed[i] = smoothed[i];
-        best_err[i] = err[i];
-        best_level[i] = uint8_t(level);
-        const Color a = cur[0][i] * g[i].divisor, b = cur[1][i] * g[i].divisor;
-        out[i] = share_a[i] * a + (1.f - share_a[i]) * b;
-        const float d = luminance(a) - luminance(b);
-        best_diff2[i] = d * d;
-      }
-    }, cancel);
+    parallel_rows(
+        h, pool,
+        [&](int y) {
+          for (size_t i = size_t(y) * size_t(w); i < size_t(y + 1) * size_t(w); ++i) {
+            if (!g[i].sampled || !(smoothed[i] < best_smoothed[i])) continue;
+            best_smoothed[i] = smoothed[i];
+            best_err[i] = err[i];
+            best_level[i] = uint8_t(level);
+            const Color a = cur[0][i] * g[i].divisor, b = cur[1][i] * g[i].divisor;
+            out[i] = share_a[i] * a + (1.f - share_a[i]) * b;
+            const float d = luminance(a) - luminance(b);
+            best_diff2[i] = d * d;
+          }
+        },
+        cancel);
   }
 
   // MSE of one denoised half: err / 2 - Var(half), Var(half) ~ (a - b)^2 / 2. The two
@@ -338,7 +363,8 @@ Denoised denoise(const Film& film, ThreadBudget* pool, const Cancel& cancel) {
   }
   if (counted) {
     for (double& s : result.scale_share) s /= double(counted);
-    if (lum > 0.0) result.relative_error = std::sqrt(std::max(mse, 0.0) / double(counted)) / (lum / double(counted));
+    if (lum > 0.0)
+      result.relative_error = std::sqrt(std::max(mse, 0.0) / double(counted)) / (lum / double(counted));
   }
   result.image = RgbImage{w, h, std::move(out)};
   return result;
@@ -354,7 +380,8 @@ double estimate_denoise_seconds(int width, int height, ThreadBudget* pool) {
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         const bool left = x < y;
-        const float noise = float(hash_u32(uint32_t(x) * 7919u + uint32_t(y) * 104729u + pass) >> 8) * 0x1p-24f;
+        const float noise =
+            float(hash_u32(uint32_t(x) * 7919u + uint32_t(y) * 104729u + pass) >> 8) * 0x1p-24f;
         film.add_sample(x, y, pass, Color(left ? 0.2f : 0.7f) * (0.5f + noise));
         FirstHit hit;
         hit.albedo = Color(left ? 0.3f : 0.8f);

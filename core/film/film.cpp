@@ -152,8 +152,10 @@ void Film::add_pixel(int x, int y, const FilmPixel& p) {
   if (!hit_count_.empty()) hit_count_[i] += p.hit_count;
   if (!ids_mixed_.empty()) {
     uint8_t mixed = uint8_t(ids_mixed_[i] | p.ids_mixed);
-    if (!object_id_.empty() && object_id_[i] != -2 && p.object_id != -2 && p.object_id != object_id_[i]) mixed |= 1u;
-    if (!material_id_.empty() && material_id_[i] != -2 && p.material_id != -2 && p.material_id != material_id_[i])
+    if (!object_id_.empty() && object_id_[i] != -2 && p.object_id != -2 && p.object_id != object_id_[i])
+      mixed |= 1u;
+    if (!material_id_.empty() && material_id_[i] != -2 && p.material_id != -2 &&
+        p.material_id != material_id_[i])
       mixed |= 2u;
     ids_mixed_[i] = mixed;
   }
@@ -180,12 +182,16 @@ void Film::add_first_hit(int x, int y, const FirstHit& hit) {
   const size_t i = index(x, y);
   // Ids are not averaged: the first sample's id stands for the pixel.
   if (!object_id_.empty()) {
-    if (object_id_[i] == -2) object_id_[i] = hit.object;
-    else if (object_id_[i] != hit.object) ids_mixed_[i] |= 1u;
+    if (object_id_[i] == -2)
+      object_id_[i] = hit.object;
+    else if (object_id_[i] != hit.object)
+      ids_mixed_[i] |= 1u;
   }
   if (!material_id_.empty()) {
-    if (material_id_[i] == -2) material_id_[i] = hit.material;
-    else if (material_id_[i] != hit.material) ids_mixed_[i] |= 2u;
+    if (material_id_[i] == -2)
+      material_id_[i] = hit.material;
+    else if (material_id_[i] != hit.material)
+      ids_mixed_[i] |= 2u;
   }
   if (hit_count_.empty() || hit.object < 0) return;
   ++hit_count_[i];
@@ -243,17 +249,28 @@ RgbImage Film::resolve_aov(Aov aov) const {
   for (size_t i = 0; i < img.pixels.size(); ++i) {
     const double hits = hit_count_.empty() ? 0.0 : double(hit_count_[i]);
     switch (aov) {
-      case Aov::albedo: img.pixels[i] = hits > 0.0 ? Color(albedo_sum_[i] / hits) : Color(0.f); break;
+      case Aov::albedo:
+        img.pixels[i] = hits > 0.0 ? Color(albedo_sum_[i] / hits) : Color(0.f);
+        break;
       case Aov::normal: {
         const glm::dvec3 n = normal_sum_[i];
         img.pixels[i] = glm::length(n) > 0.0 ? Vec3(glm::normalize(n)) : Vec3(0.f);
         break;
       }
-      case Aov::depth: img.pixels[i] = Color(hits > 0.0 ? float(depth_sum_[i] / hits) : 0.f); break;
-      case Aov::object_id: img.pixels[i] = Color(float(object_id_[i] < -1 ? -1 : object_id_[i])); break;
-      case Aov::material_id: img.pixels[i] = Color(float(material_id_[i] < -1 ? -1 : material_id_[i])); break;
-      case Aov::toon_band: img.pixels[i] = Color(hits > 0.0 ? float(band_sum_[i] / hits) : -1.f); break;
-      default: break;  // outline AOVs are handled above
+      case Aov::depth:
+        img.pixels[i] = Color(hits > 0.0 ? float(depth_sum_[i] / hits) : 0.f);
+        break;
+      case Aov::object_id:
+        img.pixels[i] = Color(float(object_id_[i] < -1 ? -1 : object_id_[i]));
+        break;
+      case Aov::material_id:
+        img.pixels[i] = Color(float(material_id_[i] < -1 ? -1 : material_id_[i]));
+        break;
+      case Aov::toon_band:
+        img.pixels[i] = Color(hits > 0.0 ? float(band_sum_[i] / hits) : -1.f);
+        break;
+      default:
+        break;  // outline AOVs are handled above
     }
   }
   return img;

@@ -26,15 +26,33 @@ namespace inkray {
 // First-hit AOVs, then the outline coverage: all types together, then one per
 // type in LineType order (debug views).
 enum class Aov {
-  albedo, normal, depth, object_id, material_id, toon_band,
-  outline, outline_depth, outline_crease, outline_intersection, outline_material, outline_object,
+  albedo,
+  normal,
+  depth,
+  object_id,
+  material_id,
+  toon_band,
+  outline,
+  outline_depth,
+  outline_crease,
+  outline_intersection,
+  outline_material,
+  outline_object,
   outline_silhouette
 };
-inline constexpr std::array<std::string_view, 13> kAovNames = {
-    "albedo",          "normal",         "depth",
-    "object_id",       "material_id",    "toon_band",      "outline",
-    "outline_depth",   "outline_crease", "outline_intersection",
-    "outline_material", "outline_object", "outline_silhouette"};
+inline constexpr std::array<std::string_view, 13> kAovNames = {"albedo",
+                                                               "normal",
+                                                               "depth",
+                                                               "object_id",
+                                                               "material_id",
+                                                               "toon_band",
+                                                               "outline",
+                                                               "outline_depth",
+                                                               "outline_crease",
+                                                               "outline_intersection",
+                                                               "outline_material",
+                                                               "outline_object",
+                                                               "outline_silhouette"};
 std::optional<Aov> aov_from_name(std::string_view name);
 inline bool is_outline_aov(Aov a) { return uint32_t(a) >= uint32_t(Aov::outline); }
 // "albedo, normal, ..." for help texts and error messages.
@@ -48,7 +66,9 @@ struct AovSet {
   void add(Aov a) { bits |= 1u << uint32_t(a); }
   bool any_first_hit() const { return bits & ((1u << uint32_t(Aov::outline)) - 1u); }
   // AOVs that are averaged over the samples that hit something.
-  bool averages_hits() const { return has(Aov::albedo) || has(Aov::normal) || has(Aov::depth) || has(Aov::toon_band); }
+  bool averages_hits() const {
+    return has(Aov::albedo) || has(Aov::normal) || has(Aov::depth) || has(Aov::toon_band);
+  }
   AovSet first_hit() const { return {bits & ((1u << uint32_t(Aov::outline)) - 1u)}; }
 };
 
@@ -66,7 +86,8 @@ struct LineSums {
 // One pixel's raw state: what a partial file holds and a merge adds up
 // (film_partial.h). Ids are -2 before the pixel's first sample.
 struct FilmPixel {
-  std::array<glm::dvec3, 2> sum{glm::dvec3(0.0), glm::dvec3(0.0)};  // radiance of the two halves (half_of_pass)
+  std::array<glm::dvec3, 2> sum{glm::dvec3(0.0),
+                                glm::dvec3(0.0)};  // radiance of the two halves (half_of_pass)
   std::array<uint32_t, 2> count{};
   glm::dvec3 albedo_sum{0.0}, normal_sum{0.0};
   double depth_sum = 0.0, band_sum = 0.0;

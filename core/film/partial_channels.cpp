@@ -28,8 +28,7 @@ std::vector<PartialChannel> partial_channels(const PartialInfo& info) {
       c.push_back({std::string("normal.") + xyz[k], PartialField::normal, k, PartialStored::f64});
   if (a.has(Aov::depth)) c.push_back({"depth.Z", PartialField::depth, 0, PartialStored::f64});
   if (a.has(Aov::toon_band)) c.push_back({"toon_band", PartialField::band, 0, PartialStored::f64});
-  if (a.averages_hits())
-    c.push_back({"hits", PartialField::hits, 0, PartialStored::u32});
+  if (a.averages_hits()) c.push_back({"hits", PartialField::hits, 0, PartialStored::u32});
   if (a.has(Aov::object_id)) c.push_back({"object_id", PartialField::object_id, 0, PartialStored::i32});
   if (a.has(Aov::material_id)) c.push_back({"material_id", PartialField::material_id, 0, PartialStored::i32});
   if (a.has(Aov::object_id) || a.has(Aov::material_id))

@@ -12,19 +12,21 @@ namespace {
 
 // The filter radius is given for a 1080-line image, so the look holds at any
 // resolution: `full_height` is the image's, or the full image's for a crop.
-RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadBudget* pool, const Cancel& cancel,
-                         int full_height) {
+RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadBudget* pool,
+                         const Cancel& cancel, int full_height) {
   if (settings.painterly == PainterlyFilter::none) return image;
   PainterlyFilterParams params;
   params.radius = settings.painterly_radius * float(full_height) / 1080.f;
   params.sharpness = settings.painterly_sharpness;
-  return settings.painterly == PainterlyFilter::kuwahara ? kuwahara_filter(image, params, pool, cancel)
-                                                         : anisotropic_kuwahara_filter(image, params, pool, cancel);
+  return settings.painterly == PainterlyFilter::kuwahara
+             ? kuwahara_filter(image, params, pool, cancel)
+             : anisotropic_kuwahara_filter(image, params, pool, cancel);
 }
 
 }  // namespace
 
-RgbImage resolve_base(const Film& film, const RenderSettings& settings, ThreadBudget* pool, const Cancel& cancel) {
+RgbImage resolve_base(const Film& film, const RenderSettings& settings, ThreadBudget* pool,
+                      const Cancel& cancel) {
   return apply_painterly(film.resolve(), settings, pool, cancel, film.height());
 }
 

@@ -28,8 +28,8 @@ RgbImage resolve_base(const Film& film, const RenderSettings& settings, ThreadBu
                       const Cancel& cancel = {});
 // The same over a mean-radiance image of the film other than its own mean (the
 // denoiser's, core/film/denoise.h); `full_height` scales the filter as the film's height does.
-RgbImage resolve_base(RgbImage radiance, const RenderSettings& settings, int full_height, ThreadBudget* pool = nullptr,
-                      const Cancel& cancel = {});
+RgbImage resolve_base(RgbImage radiance, const RenderSettings& settings, int full_height,
+                      ThreadBudget* pool = nullptr, const Cancel& cancel = {});
 // Whether resolve_base gives one film the same image under both settings, so a
 // cached one serves (only line settings changed).
 bool same_base(const RenderSettings& a, const RenderSettings& b);
@@ -64,7 +64,8 @@ RgbImage resolve_final(const Film& film, RgbImage radiance, const RenderSettings
 // Seconds the painterly filter will take on a width x height image, timed on a
 // 64 x 64 crop and scaled by the pixel count; 0 without a filter. A final render
 // with a time limit stops early enough to leave it this time.
-double estimate_painterly_seconds(const RenderSettings& settings, int width, int height, ThreadBudget* pool = nullptr);
+double estimate_painterly_seconds(const RenderSettings& settings, int width, int height,
+                                  ThreadBudget* pool = nullptr);
 
 inline RgbImage resolve_final(const Film& film, const RenderScene& scene, const DisplayEncoding& display = {},
                               ThreadBudget* pool = nullptr, const Cancel& cancel = {}) {

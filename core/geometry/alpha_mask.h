@@ -23,9 +23,9 @@ struct AlphaTriangle {
 static_assert(sizeof(AlphaTriangle) == 16);
 
 struct AlphaMask {
-  int width = 0;     // texels across u
-  int height = 0;    // texels along v
-  int variants = 1;  // stacked layers of width x height texels
+  int width = 0;                // texels across u
+  int height = 0;               // texels along v
+  int variants = 1;             // stacked layers of width x height texels
   std::vector<uint8_t> texels;  // variants * height * width, row v, column u; 255 is opaque
 
   // Consecutive triangles that form one item and share a variant (a stroke's
@@ -56,9 +56,7 @@ struct AlphaMask {
   uint32_t variant_of(uint32_t prim) const;
   uint8_t& at(int variant, int u, int v) { return texels[(size_t(variant) * height + v) * width + u]; }
   uint8_t at(int variant, int u, int v) const { return texels[(size_t(variant) * height + v) * width + u]; }
-  size_t memory_bytes() const {
-    return texels.capacity() + triangles.capacity() * sizeof(AlphaTriangle);
-  }
+  size_t memory_bytes() const { return texels.capacity() + triangles.capacity() * sizeof(AlphaTriangle); }
 };
 
 // Inline: the filter calls these for every candidate hit on paint.

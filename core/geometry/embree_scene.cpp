@@ -145,7 +145,8 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
     // and every hit is refused so the query looks on.
     const uint32_t direct = reinterpret_cast<const QueryContext*>(args->context)->instance;
     const auto* query = reinterpret_cast<const QueryContext*>(args->context);
-    const uint32_t instance = direct != QueryContext::kNoInstance ? direct : query->instance_of(args->context->instID[0]);
+    const uint32_t instance =
+        direct != QueryContext::kNoInstance ? direct : query->instance_of(args->context->instID[0]);
     args->valid[0] = 0;
     if (paint->found && (instance < paint->instance || (instance == paint->instance && prim <= paint->prim)))
       return;
@@ -414,9 +415,9 @@ uint32_t EmbreeScene::add(std::shared_ptr<const ShapeBvh> bvh, const Transform& 
   return uint32_t(impl_->instances.size() - 1);
 }
 
-uint32_t EmbreeScene::add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open, const Transform& close,
-                                 std::shared_ptr<const Shape> local, std::shared_ptr<const Shape> world,
-                                 bool indirect) {
+uint32_t EmbreeScene::add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open,
+                                 const Transform& close, std::shared_ptr<const Shape> local,
+                                 std::shared_ptr<const Shape> world, bool indirect) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::add_moving after commit");
   Instance instance{std::move(bvh), open, std::move(world), indirect, true, close, std::move(local)};
   if (!instance.local) instance.local = instance.bvh->shared_shape();
@@ -441,7 +442,9 @@ void EmbreeScene::commit() {
     }
     const AlphaMask* mask = impl_->instances[id].bvh->mask();
     const bool paint = mask && mask->paint;
-    rtcSetGeometryMask(geom, !paint ? kSolid : impl_->instances[id].indirect ? kPaint | kPaintIndirect : kPaint);
+    rtcSetGeometryMask(geom, !paint                          ? kSolid
+                             : impl_->instances[id].indirect ? kPaint | kPaintIndirect
+                                                             : kPaint);
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl_->scene, geom, geom_id);
   };
@@ -520,8 +523,8 @@ Transform EmbreeScene::placement(uint32_t index, float time) const {
   for (const Impl::MotionGeometry& p : pieces)
     if (time >= p.start) piece = &p;
   std::array<float, 12> xfm{};
-  rtcGetGeometryTransform(piece->geom, glm::clamp(time, piece->start, piece->end), RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR,
-                          xfm.data());
+  rtcGetGeometryTransform(piece->geom, glm::clamp(time, piece->start, piece->end),
+                          RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
   return from_embree(xfm);
 }
 
@@ -664,7 +667,8 @@ SurfaceInteraction EmbreeScene::moving_interaction(const Ray& ray, const Hit& hi
   const Transform at = placement(hit.geometry, ray.time);
   *layer_scale = stretch(at);
   const Shape& shape = *impl_->instances[hit.geometry].local;
-  if (const auto* mesh = std::get_if<TriangleMesh>(&shape)) return triangle_interaction<true>(*mesh, hit, ray, &at);
+  if (const auto* mesh = std::get_if<TriangleMesh>(&shape))
+    return triangle_interaction<true>(*mesh, hit, ray, &at);
   const Sphere& sphere = std::get<Sphere>(shape);
   return Sphere{sphere.center, sphere.radius, at * sphere.to_world}.interaction(ray, hit.t);
 }

@@ -154,7 +154,7 @@ class EmbreeScene {
     // space): the paint-order query then asks their BVHs directly.
     std::vector<uint32_t> camera_paint, indirect_paint;
     bool direct_paint = false;
-    float camera_layer = 0.f;  // the thickest layer of camera paint
+    float camera_layer = 0.f;                                // the thickest layer of camera paint
     std::vector<std::array<Point3, 2>> camera_paint_bounds;  // world bounds of each, grown by its layer
     RTCSceneTy* scene = nullptr;
     bool committed = false;

@@ -18,7 +18,7 @@ struct Ray {
 // What the integrator needs from a hit, in world space.
 struct SurfaceInteraction {
   Point3 p{0.f};
-  Vec3 p_error{0.f};  // bound on |p - true hit point| per axis
+  Vec3 p_error{0.f};          // bound on |p - true hit point| per axis
   Normal3 ng{0.f, 0.f, 1.f};  // geometric normal, oriented by winding / outward for spheres
   Normal3 ns{0.f, 0.f, 1.f};  // shading normal, in ng's hemisphere
   Vec2 uv{0.f};

@@ -11,7 +11,8 @@ float TriangleMesh::triangle_area(size_t tri) const {
   return 0.5f * glm::length(glm::cross(b - a, c - a));
 }
 
-MeshShading interpolate_shading(const TriangleMesh& mesh, uint32_t tri, float b1, float b2, const Normal3& ng) {
+MeshShading interpolate_shading(const TriangleMesh& mesh, uint32_t tri, float b1, float b2,
+                                const Normal3& ng) {
   const uint32_t i0 = mesh.indices[3 * size_t(tri)], i1 = mesh.indices[3 * size_t(tri) + 1],
                  i2 = mesh.indices[3 * size_t(tri) + 2];
   const float b0 = 1.f - b1 - b2;
@@ -54,7 +55,8 @@ TriangleMesh transformed(const TriangleMesh& mesh, const Transform& to_world) {
   return out;
 }
 
-TriangleMesh make_quad(const Point3& corner, const Vec3& edge_u, const Vec3& edge_v, const Transform& to_world) {
+TriangleMesh make_quad(const Point3& corner, const Vec3& edge_u, const Vec3& edge_v,
+                       const Transform& to_world) {
   std::vector<Point3> p = {corner, corner + edge_u, corner + edge_u + edge_v, corner + edge_v};
   std::vector<Vec2> uv = {{0.f, 0.f}, {1.f, 0.f}, {1.f, 1.f}, {0.f, 1.f}};
   return make_mesh(std::move(p), {}, std::move(uv), {0, 1, 2, 0, 2, 3}, to_world);

@@ -33,14 +33,16 @@ struct MeshShading {
 
 // Interpolates at barycentrics (b1, b2) of triangle tri. ng is the facet's unit
 // normal, which the caller chooses where the triangle is degenerate.
-MeshShading interpolate_shading(const TriangleMesh& mesh, uint32_t tri, float b1, float b2, const Normal3& ng);
+MeshShading interpolate_shading(const TriangleMesh& mesh, uint32_t tri, float b1, float b2,
+                                const Normal3& ng);
 
 // Builds a mesh from unpadded arrays, transformed to world space.
 TriangleMesh make_mesh(std::vector<Point3> positions, std::vector<Normal3> normals, std::vector<Vec2> uvs,
                        std::vector<uint32_t> indices, const Transform& to_world);
 // The mesh moved by to_world, exactly as make_mesh would have built it there.
 TriangleMesh transformed(const TriangleMesh& mesh, const Transform& to_world);
-TriangleMesh make_quad(const Point3& corner, const Vec3& edge_u, const Vec3& edge_v, const Transform& to_world);
+TriangleMesh make_quad(const Point3& corner, const Vec3& edge_u, const Vec3& edge_v,
+                       const Transform& to_world);
 // Six outward-facing quads.
 TriangleMesh make_box(const Point3& lo, const Point3& hi, const Transform& to_world);
 // UV sphere with smooth normals, for tests and emitters that need a mesh.

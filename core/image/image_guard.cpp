@@ -48,7 +48,8 @@ std::string jpeg_problem(const Bytes& b) {
         defined[table_class][id] = true;
         std::size_t codes = 0;
         for (int i = 1; i <= 16; ++i) codes += b[p + std::size_t(i)];
-        if (codes > 256) return "a JPEG Huffman table declares " + std::to_string(codes) + " codes (at most 256)";
+        if (codes > 256)
+          return "a JPEG Huffman table declares " + std::to_string(codes) + " codes (at most 256)";
         p += 17 + codes;
         if (p > end) return "a JPEG Huffman table runs past its segment";
       }
@@ -68,7 +69,8 @@ std::string jpeg_problem(const Bytes& b) {
       // The entropy-coded data runs to the next marker that is not a stuffed 0xff00
       // or a restart marker.
       std::size_t p = end;
-      while (p + 1 < b.size() && !(b[p] == 0xff && b[p + 1] != 0x00 && (b[p + 1] < 0xd0 || b[p + 1] > 0xd7))) ++p;
+      while (p + 1 < b.size() && !(b[p] == 0xff && b[p + 1] != 0x00 && (b[p + 1] < 0xd0 || b[p + 1] > 0xd7)))
+        ++p;
       if (p + 1 >= b.size()) return {};  // the data runs to the end: stb stops there
       at = p;
       continue;
@@ -137,7 +139,8 @@ bool image_safe_to_decode(const std::filesystem::path& file, std::string* error)
     problem = jpeg_problem(b);
   } else if (starts_with(b, "#?RADIANCE") || starts_with(b, "#?RGBE")) {
     problem = hdr_problem(b);
-  } else if (b.size() >= 18 && (b[2] == 1 || b[2] == 2 || b[2] == 3 || b[2] == 9 || b[2] == 10 || b[2] == 11)) {
+  } else if (b.size() >= 18 &&
+             (b[2] == 1 || b[2] == 2 || b[2] == 3 || b[2] == 9 || b[2] == 10 || b[2] == 11)) {
     return true;  // TGA has no signature; its image type byte is the best there is
   } else {
     problem = "not a PNG, JPEG, HDR, BMP or TGA image";

@@ -19,7 +19,8 @@ std::optional<ImageSize> read_image_size(const std::filesystem::path& file, std:
   }
   if (size.width <= 0 || size.height <= 0 || size.width > kMaxImageSide || size.height > kMaxImageSide ||
       size.texels() > kMaxImageTexels) {
-    *error = file.string() + ": the image is " + std::to_string(size.width) + " x " + std::to_string(size.height) +
+    *error = file.string() + ": the image is " + std::to_string(size.width) + " x " +
+             std::to_string(size.height) +
              " pixels; inkray reads images of at most 8192 x 8192 pixels (67 Mpixels) and " +
              std::to_string(kMaxImageSide) + " on a side";
     return std::nullopt;

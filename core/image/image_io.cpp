@@ -120,10 +120,15 @@ bool encode_image(const std::filesystem::path& file, const RgbImage& image, std:
                   std::string* error) {
   bytes->clear();
   switch (image_format_of(file)) {
-    case ImageFormat::png: return encode_png(file, image, bytes, error);
-    case ImageFormat::pfm: encode_pfm(image, bytes); return true;
-    case ImageFormat::exr: return encode_exr(file, image, bytes, error);
-    case ImageFormat::unknown: break;
+    case ImageFormat::png:
+      return encode_png(file, image, bytes, error);
+    case ImageFormat::pfm:
+      encode_pfm(image, bytes);
+      return true;
+    case ImageFormat::exr:
+      return encode_exr(file, image, bytes, error);
+    case ImageFormat::unknown:
+      break;
   }
   *error = file.string() + ": unknown image format (expected .png, .pfm or .exr)";
   return false;
@@ -210,9 +215,8 @@ bool read_pfm(const std::filesystem::path& file, RgbImage* image, std::string* e
   std::string magic;
   int w = 0, h = 0;
   float scale = 0.f;
-  if (!(in >> magic >> w >> h >> scale) || magic != "PF" || w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide ||
-      ImageSize{w, h}.texels() > kMaxImageTexels ||
-      scale >= 0.f) {
+  if (!(in >> magic >> w >> h >> scale) || magic != "PF" || w <= 0 || h <= 0 || w > kMaxImageSide ||
+      h > kMaxImageSide || ImageSize{w, h}.texels() > kMaxImageTexels || scale >= 0.f) {
     *error = file.string() + ": not a little-endian RGB PFM file";
     return false;
   }

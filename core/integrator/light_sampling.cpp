@@ -23,8 +23,9 @@ LightSample delta_sample(const LightReference& ref, const Point3& light_p, const
 }
 
 // Completes a sample that reached a point on an emitting surface.
-std::optional<LightSample> surface_sample(const RenderScene& scene, const LightReference& ref, uint32_t object,
-                                          const SurfaceInteraction& on_light, float pdf_solid_angle) {
+std::optional<LightSample> surface_sample(const RenderScene& scene, const LightReference& ref,
+                                          uint32_t object, const SurfaceInteraction& on_light,
+                                          float pdf_solid_angle) {
   const Vec3 d = on_light.p - ref.p;
   const float dist2 = glm::dot(d, d);
   if (!(dist2 > 0.f) || !(pdf_solid_angle > 0.f) || !std::isfinite(pdf_solid_angle)) return std::nullopt;
@@ -58,7 +59,8 @@ SurfaceInteraction mesh_point(const TriangleMesh& mesh, size_t tri, Vec2 b) {
   const Point3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
   SurfaceInteraction si;
   si.p = b0 * p0 + b1 * p1 + b2 * p2;
-  si.p_error = Vec3(gamma_bound(7) * max_component(glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2)));
+  si.p_error =
+      Vec3(gamma_bound(7) * max_component(glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2)));
   si.ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   if (!mesh.normals.empty()) {
     const Vec3 ns = b0 * mesh.normals[i0] + b1 * mesh.normals[i1] + b2 * mesh.normals[i2];
@@ -71,8 +73,8 @@ SurfaceInteraction mesh_point(const TriangleMesh& mesh, size_t tri, Vec2 b) {
   return si;
 }
 
-std::optional<LightSample> sample_mesh(const RenderScene& scene, const MeshAreaLight& l, const LightReference& ref,
-                                       Vec2 u) {
+std::optional<LightSample> sample_mesh(const RenderScene& scene, const MeshAreaLight& l,
+                                       const LightReference& ref, Vec2 u) {
   const auto& mesh = std::get<TriangleMesh>(scene.geometry.shape(l.object));
   float pmf = 0.f;
   const size_t tri = l.triangles.sample(u.x, &pmf, &u.x);
@@ -107,8 +109,8 @@ SurfaceInteraction rect_point(const TriangleMesh& mesh, float s, float t) {
   return s >= t ? mesh_point(mesh, 0, Vec2(1.f - s, s - t)) : mesh_point(mesh, 1, Vec2(1.f - t, s));
 }
 
-std::optional<LightSample> sample_rect(const RenderScene& scene, const RectAreaLight& l, const LightReference& ref,
-                                       Vec2 u) {
+std::optional<LightSample> sample_rect(const RenderScene& scene, const RectAreaLight& l,
+                                       const LightReference& ref, Vec2 u) {
   const auto& mesh = std::get<TriangleMesh>(scene.geometry.shape(l.object));
   const auto solid = rect_solid_angle(l, ref.p);
   Vec2 st = u;  // the point's fractions of the edges
@@ -155,7 +157,8 @@ std::optional<LightSample> sample_sphere(const RenderScene& scene, const SphereA
   return surface_sample(scene, ref, l.object, on_light, pdf);
 }
 
-std::optional<LightSample> sample_environment(const EnvironmentLight& env, const LightReference& ref, Vec2 u) {
+std::optional<LightSample> sample_environment(const EnvironmentLight& env, const LightReference& ref,
+                                              Vec2 u) {
   LightSample s;
   s.wi = sample_uniform_sphere(u);
   s.radiance = env.radiance(s.wi);
@@ -176,7 +179,8 @@ float solid_angle_pdf(const RectAreaLight& r, const LightReference& ref, const S
   if (const auto solid = rect_solid_angle(r, ref.p)) return float(1.0 / solid->solid_angle);
   return area_to_solid_angle(1.f / (r.width * r.height), ref.p, on_light);
 }
-float solid_angle_pdf(const SphereAreaLight& s, const LightReference& ref, const SurfaceInteraction& on_light) {
+float solid_angle_pdf(const SphereAreaLight& s, const LightReference& ref,
+                      const SurfaceInteraction& on_light) {
   const float cos_max = sphere_cos_max(s, ref.p);
   if (cos_max > 0.f) return uniform_cone_pdf(cos_max);
   return area_to_solid_angle(1.f / (4.f * kPi * s.radius * s.radius), ref.p, on_light);
@@ -187,8 +191,8 @@ float solid_angle_pdf(const EnvironmentLight&, const LightReference&, const Surf
 
 }  // namespace
 
-std::optional<LightSample> sample_light(const RenderScene& scene, const Light& light, const LightReference& ref,
-                                        Vec2 u) {
+std::optional<LightSample> sample_light(const RenderScene& scene, const Light& light,
+                                        const LightReference& ref, Vec2 u) {
   return std::visit(
       [&](const auto& l) -> std::optional<LightSample> {
         using T = std::decay_t<decltype(l)>;
@@ -225,8 +229,8 @@ std::optional<LightSample> sample_light(const RenderScene& scene, const Light& l
       light);
 }
 
-float light_pdf(const RenderScene& /*scene*/, const Light& light, const LightReference& ref, const Vec3& /*wi*/,
-                const SurfaceInteraction& on_light) {
+float light_pdf(const RenderScene& /*scene*/, const Light& light, const LightReference& ref,
+                const Vec3& /*wi*/, const SurfaceInteraction& on_light) {
   return std::visit(
       [&](const auto& l) -> float {
         if constexpr (LightTraits<std::decay_t<decltype(l)>>::delta) {
@@ -253,9 +257,12 @@ float light_power(const RenderScene& scene, const Light& light) {
           const Material& m = scene.material_of(l.object);
           const bool two_sided = std::get<EmissiveMaterial>(m).two_sided;
           float area = 0.f;
-          if constexpr (std::is_same_v<T, MeshAreaLight>) area = l.area;
-          else if constexpr (std::is_same_v<T, RectAreaLight>) area = l.width * l.height;
-          else area = 4.f * kPi * l.radius * l.radius;
+          if constexpr (std::is_same_v<T, MeshAreaLight>)
+            area = l.area;
+          else if constexpr (std::is_same_v<T, RectAreaLight>)
+            area = l.width * l.height;
+          else
+            area = 4.f * kPi * l.radius * l.radius;
           return kPi * (two_sided ? 2.f : 1.f) * area * luminance(material_average_emission(m));
         } else {
           static_assert(std::is_same_v<T, EnvironmentLight>, "a kind of light light_power does not handle");

@@ -7,8 +7,8 @@
 
 namespace inkray {
 
-std::optional<LightSample> sample_light(const RenderScene& scene, const Light& light, const LightReference& ref,
-                                        Vec2 u);
+std::optional<LightSample> sample_light(const RenderScene& scene, const Light& light,
+                                        const LightReference& ref, Vec2 u);
 // Solid-angle pdf that sample_light would produce direction wi hitting `on_light`
 // (ignored for the environment). Zero for delta lights.
 float light_pdf(const RenderScene& scene, const Light& light, const LightReference& ref, const Vec3& wi,

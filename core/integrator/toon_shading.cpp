@@ -100,8 +100,8 @@ LightTerm environment_term(const RenderScene& scene, const EnvironmentLight& env
 
 // A light sampled for its direction: `reference`, when given, is what a surface facing
 // it would receive, else the sample's own unshadowed irradiance is.
-LightTerm sampled_term(const RenderScene& scene, const Light& light, const ToonHit& hit, Vec2 u, uint32_t* rays,
-                       std::optional<Color> reference) {
+LightTerm sampled_term(const RenderScene& scene, const Light& light, const ToonHit& hit, Vec2 u,
+                       uint32_t* rays, std::optional<Color> reference) {
   LightTerm t;
   auto ls = sample_light(scene, light, hit.ref, u);
   if (reference) {
@@ -130,19 +130,20 @@ LightTerm light_term(const RenderScene& scene, const Light& light, const ToonMat
   const auto sampled = [&](std::optional<Color> reference = std::nullopt) {
     return sampled_term(scene, light, hit, u, rays, reference);
   };
-  return std::visit(Overloaded{
-                        [&](const EnvironmentLight& env) { return environment_term(scene, env, m, hit, u, rays); },
-                        [&](const SpotLight& spot) {
-                          const Vec3 d = spot.position - hit.ref.p;
-                          return sampled(spot.intensity / std::max(glm::dot(d, d), 1e-20f));
-                        },
-                        [&](const PointLight&) { return sampled(); },
-                        [&](const DirectionalLight&) { return sampled(); },
-                        [&](const MeshAreaLight&) { return sampled(); },
-                        [&](const RectAreaLight&) { return sampled(); },
-                        [&](const SphereAreaLight&) { return sampled(); },
-                    },
-                    light);
+  return std::visit(
+      Overloaded{
+          [&](const EnvironmentLight& env) { return environment_term(scene, env, m, hit, u, rays); },
+          [&](const SpotLight& spot) {
+            const Vec3 d = spot.position - hit.ref.p;
+            return sampled(spot.intensity / std::max(glm::dot(d, d), 1e-20f));
+          },
+          [&](const PointLight&) { return sampled(); },
+          [&](const DirectionalLight&) { return sampled(); },
+          [&](const MeshAreaLight&) { return sampled(); },
+          [&](const RectAreaLight&) { return sampled(); },
+          [&](const SphereAreaLight&) { return sampled(); },
+      },
+      light);
 }
 
 float ramp_v(const ToonMaterial& m, const ToonHit& hit) {
@@ -170,7 +171,8 @@ ToonShade toon_shade(const RenderScene& scene, const ToonMaterial& m, const Toon
   Color tint_sum(0.f);
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
-    const bool sampled = std::holds_alternative<MeshAreaLight>(light) || std::holds_alternative<RectAreaLight>(light) ||
+    const bool sampled = std::holds_alternative<MeshAreaLight>(light) ||
+                         std::holds_alternative<RectAreaLight>(light) ||
                          std::holds_alternative<SphereAreaLight>(light) ||
                          (std::holds_alternative<EnvironmentLight>(light) && m.environment_shadows);
     const LightTerm t = light_term(

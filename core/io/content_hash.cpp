@@ -34,7 +34,7 @@ ContentHash& ContentHash::add(std::string_view bytes) {
   size_t n = bytes.size();
   length_ += n;
   if (n == 0) return *this;  // data() may be null: memcpy must not see it
-  if (tail_size_) {  // finish a word begun by the last piece
+  if (tail_size_) {          // finish a word begun by the last piece
     const size_t take = std::min<size_t>(8 - tail_size_, n);
     std::memcpy(tail_ + tail_size_, p, take);
     tail_size_ += unsigned(take);

@@ -40,7 +40,7 @@ struct RectAreaLight {
   uint32_t object = 0;
   Point3 corner{0.f};
   Vec3 x{1.f, 0.f, 0.f}, y{0.f, 0.f, 1.f};  // unit edge directions
-  float width = 1.f, height = 1.f;         // edge lengths
+  float width = 1.f, height = 1.f;          // edge lengths
 };
 // Emissive sphere without shear or non-uniform scale: sampled by solid angle.
 struct SphereAreaLight {
@@ -58,8 +58,8 @@ struct EnvironmentLight {
   }
 };
 
-using Light = std::variant<PointLight, SpotLight, DirectionalLight, MeshAreaLight, RectAreaLight, SphereAreaLight,
-                           EnvironmentLight>;
+using Light = std::variant<PointLight, SpotLight, DirectionalLight, MeshAreaLight, RectAreaLight,
+                           SphereAreaLight, EnvironmentLight>;
 
 // What kind of light each alternative is. There is no primary template: a light added
 // to `Light` does not compile until it says what it is here, and every dispatch over
@@ -69,13 +69,34 @@ template <class L>
 struct LightTraits;
 // A delta light (a point, spot or directional light) is reached only by sampling it:
 // no BSDF sample hits it, so its solid-angle density is never asked for.
-template <> struct LightTraits<PointLight> { static constexpr bool delta = true; };
-template <> struct LightTraits<SpotLight> { static constexpr bool delta = true; };
-template <> struct LightTraits<DirectionalLight> { static constexpr bool delta = true; };
-template <> struct LightTraits<MeshAreaLight> { static constexpr bool delta = false; };
-template <> struct LightTraits<RectAreaLight> { static constexpr bool delta = false; };
-template <> struct LightTraits<SphereAreaLight> { static constexpr bool delta = false; };
-template <> struct LightTraits<EnvironmentLight> { static constexpr bool delta = false; };
+template <>
+struct LightTraits<PointLight> {
+  static constexpr bool delta = true;
+};
+template <>
+struct LightTraits<SpotLight> {
+  static constexpr bool delta = true;
+};
+template <>
+struct LightTraits<DirectionalLight> {
+  static constexpr bool delta = true;
+};
+template <>
+struct LightTraits<MeshAreaLight> {
+  static constexpr bool delta = false;
+};
+template <>
+struct LightTraits<RectAreaLight> {
+  static constexpr bool delta = false;
+};
+template <>
+struct LightTraits<SphereAreaLight> {
+  static constexpr bool delta = false;
+};
+template <>
+struct LightTraits<EnvironmentLight> {
+  static constexpr bool delta = false;
+};
 
 namespace light_detail {
 template <class V>
@@ -99,7 +120,7 @@ struct LightSample {
   Vec3 wi{0.f};         // towards the light, normalised
   float pdf = 0.f;      // solid angle (1 for delta lights), not including the light's selection pmf
   bool is_delta = false;
-  Ray shadow_ray;        // from the reference point to the light
+  Ray shadow_ray;  // from the reference point to the light
   float shadow_t_max = 0.f;
 };
 

@@ -64,8 +64,8 @@ bool material_uses_light(std::span<const Material> materials, uint32_t index) {
   return false;
 }
 
-SurfaceOverrides material_overrides(std::span<const Material> materials, uint32_t index, const ShadingPoint& sp,
-                                    float u) {
+SurfaceOverrides material_overrides(std::span<const Material> materials, uint32_t index,
+                                    const ShadingPoint& sp, float u) {
   for (size_t steps = 0; steps <= materials.size() && index < materials.size(); ++steps) {
     const Material& m = materials[index];
     if (const auto* graph = std::get_if<GraphMaterial>(&m)) return shader_overrides(*graph->program, sp);

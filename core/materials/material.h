@@ -90,19 +90,23 @@ template <class T>
 struct MaterialTraits;
 template <>
 struct MaterialTraits<DiffuseMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .resolves = false};
+  static constexpr MaterialFlags flags{
+      .scatters = true, .emits = false, .transmits = false, .resolves = false};
 };
 template <>
 struct MaterialTraits<ConductorMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .resolves = false};
+  static constexpr MaterialFlags flags{
+      .scatters = true, .emits = false, .transmits = false, .resolves = false};
 };
 template <>
 struct MaterialTraits<DielectricMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = true, .resolves = false};
+  static constexpr MaterialFlags flags{
+      .scatters = true, .emits = false, .transmits = true, .resolves = false};
 };
 template <>
 struct MaterialTraits<EmissiveMaterial> {
-  static constexpr MaterialFlags flags{.scatters = false, .emits = true, .transmits = false, .resolves = false};
+  static constexpr MaterialFlags flags{
+      .scatters = false, .emits = true, .transmits = false, .resolves = false};
 };
 // Shows its colour to every ray, lit by nothing: it neither scatters nor lights the scene.
 template <>
@@ -112,20 +116,24 @@ struct MaterialTraits<UnlitMaterial> {
 };
 template <>
 struct MaterialTraits<TransparentMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = true, .resolves = false};
+  static constexpr MaterialFlags flags{
+      .scatters = true, .emits = false, .transmits = true, .resolves = false};
 };
 // Scatters as a Lambertian of its lit colour where the path does not show its cel look.
 template <>
 struct MaterialTraits<ToonMaterial> {
-  static constexpr MaterialFlags flags{.scatters = true, .emits = false, .transmits = false, .resolves = false};
+  static constexpr MaterialFlags flags{
+      .scatters = true, .emits = false, .transmits = false, .resolves = false};
 };
 template <>
 struct MaterialTraits<MixMaterial> {
-  static constexpr MaterialFlags flags{.scatters = false, .emits = false, .transmits = false, .resolves = true};
+  static constexpr MaterialFlags flags{
+      .scatters = false, .emits = false, .transmits = false, .resolves = true};
 };
 template <>
 struct MaterialTraits<GraphMaterial> {
-  static constexpr MaterialFlags flags{.scatters = false, .emits = false, .transmits = false, .resolves = true};
+  static constexpr MaterialFlags flags{
+      .scatters = false, .emits = false, .transmits = false, .resolves = true};
 };
 
 // The flags of the kind `m` holds.
@@ -159,8 +167,8 @@ struct SurfaceOverrides {
   std::optional<float> line_width;
   std::optional<Color> stroke_color;
 };
-SurfaceOverrides material_overrides(std::span<const Material> materials, uint32_t index, const ShadingPoint& sp,
-                                    float u);
+SurfaceOverrides material_overrides(std::span<const Material> materials, uint32_t index,
+                                    const ShadingPoint& sp, float u);
 
 // Materials read the hit's uv and vertex colour (si.color multiplies base colours).
 // The functions below see a mix as neither scattering nor emitting: resolve it first.

@@ -23,7 +23,8 @@ void run_shader(const ShaderProgram& program, const ShadingPoint& sp, ShaderRegi
 // Walks the closure tree with u (rescaled at each choice) and returns the chosen
 // surface: a constant leaf's template itself, else the template written to
 // `scratch` with its inputs taken from the registers.
-ResolvedMaterial pick_closure(const ShaderProgram& program, const Vec3* registers, float u, Material& scratch);
+ResolvedMaterial pick_closure(const ShaderProgram& program, const Vec3* registers, float u,
+                              Material& scratch);
 inline ResolvedMaterial pick_closure(const ShaderProgram& program, const ShaderRegisters& registers, float u,
                                      Material& scratch) {
   return pick_closure(program, registers.data(), u, scratch);

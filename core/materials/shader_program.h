@@ -28,24 +28,68 @@ struct ClosureInputBounds {
 
 enum class ShaderOp : uint8_t {
   // conversions between socket types
-  luminance, mean, clamp01,
+  luminance,
+  mean,
+  clamp01,
   // math (mode: MathOp), map_range (mode 1: clamped)
-  math, map_range,
+  math,
+  map_range,
   // colour
-  mix_color, hsv_adjust, rgb_to_hsv, hsv_to_rgb, ramp, separate_x, separate_y, separate_z, combine,
+  mix_color,
+  hsv_adjust,
+  rgb_to_hsv,
+  hsv_to_rgb,
+  ramp,
+  separate_x,
+  separate_y,
+  separate_z,
+  combine,
   // vectors (mode: VectorOp); vector_value is the float result of dot and length
-  vector_math, vector_value,
+  vector_math,
+  vector_value,
   // the hit
-  position, object_position, normal, true_normal, uv, incoming, facing, object_id, material_id, depth, random,
-  n_dot_l, shadow, light_color, fresnel, layer_weight_fresnel, layer_weight_facing,
+  position,
+  object_position,
+  normal,
+  true_normal,
+  uv,
+  incoming,
+  facing,
+  object_id,
+  material_id,
+  depth,
+  random,
+  n_dot_l,
+  shadow,
+  light_color,
+  fresnel,
+  layer_weight_fresnel,
+  layer_weight_facing,
   // textures (aux: the image, ramp or none; mode: noise kind)
-  image_color, image_alpha, checker_color, checker_fac, noise_fac, noise_color, voronoi_distance,
-  voronoi_color, voronoi_position,
+  image_color,
+  image_alpha,
+  checker_color,
+  checker_fac,
+  noise_fac,
+  noise_color,
+  voronoi_distance,
+  voronoi_color,
+  voronoi_position,
 };
 
 // Operations of the math and vector math nodes, in the order of their JSON names.
 enum class ShaderMath : uint8_t {
-  add, subtract, multiply, divide, power, minimum, maximum, clamp, smoothstep, greater_than, less_than
+  add,
+  subtract,
+  multiply,
+  divide,
+  power,
+  minimum,
+  maximum,
+  clamp,
+  smoothstep,
+  greater_than,
+  less_than
 };
 enum class ShaderVector : uint8_t { add, subtract, multiply, dot, cross, normalize, length, scale };
 
@@ -56,18 +100,18 @@ inline constexpr size_t kMaxClosures = 4096;  // closure-tree nodes (indices are
 
 struct ShaderInstr {
   ShaderOp op;
-  uint8_t mode = 0;      // the node's choice (operation, blend, noise kind)
-  uint16_t out = 0;      // register written
+  uint8_t mode = 0;                             // the node's choice (operation, blend, noise kind)
+  uint16_t out = 0;                             // register written
   std::array<uint16_t, kMaxShaderInputs> in{};  // registers read
-  uint32_t aux = 0;      // index into the program's images or ramps; octaves for noise
+  uint32_t aux = 0;                             // index into the program's images or ramps; octaves for noise
 };
 
 // Mixes and adds over leaves; node 0 is the root. Children precede their parents' use.
 struct ClosureNode {
   enum class Kind : uint8_t { leaf, mix, add } kind = Kind::leaf;
-  uint16_t leaf = 0;                 // for leaf
-  uint16_t fac = kNoRegister;        // for mix: the register of b's weight
-  uint16_t a = 0, b = 0;             // for mix and add: child nodes
+  uint16_t leaf = 0;           // for leaf
+  uint16_t fac = kNoRegister;  // for mix: the register of b's weight
+  uint16_t a = 0, b = 0;       // for mix and add: child nodes
 };
 
 struct ImageChannels {
@@ -83,7 +127,7 @@ struct ShaderProgram {
   std::vector<ClosureNode> closures;  // empty: the graph has no surface (renders black)
   std::vector<ImageChannels> images;
   std::vector<std::vector<RampStop>> ramps;  // sorted by position
-  uint16_t line_color = kNoRegister;  // output overrides, kNoRegister when unlinked
+  uint16_t line_color = kNoRegister;         // output overrides, kNoRegister when unlinked
   uint16_t line_width = kNoRegister;
   uint16_t stroke_color = kNoRegister;
   bool uses_light = false;  // the light inputs must be gathered before running

@@ -11,7 +11,7 @@ namespace inkray {
 
 struct ShadingPoint {
   const SurfaceInteraction* si = nullptr;
-  Vec3 wo{0.f, 0.f, 1.f};   // towards the viewer, normalised
+  Vec3 wo{0.f, 0.f, 1.f};     // towards the viewer, normalised
   Normal3 ns{0.f, 0.f, 1.f};  // shading normal on the viewer's side
   Normal3 ng{0.f, 0.f, 1.f};  // geometric normal on the viewer's side
   Point3 p_object{0.f};       // the hit in the object's own space (textures stay on a moving object)

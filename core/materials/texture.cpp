@@ -15,8 +15,8 @@ Color bilinear_repeat(const RgbImage& img, Vec2 uv) {
     yi = ((yi % img.height) + img.height) % img.height;
     return img.at(xi, yi);
   };
-  return glm::mix(glm::mix(texel(x0, y0), texel(x0 + 1, y0), fx), glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), fx),
-                  fy);
+  return glm::mix(glm::mix(texel(x0, y0), texel(x0 + 1, y0), fx),
+                  glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), fx), fy);
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ Color toon_base_color(const ToonMaterial& m, const Color& base, const ToonLightI
   if (m.ramp_image)
     return base * toon_ramp_image_eval(*m.ramp_image, level, in.ramp_v) *
            glm::mix(Color(1.f), in.tint, level);
-  if (m.ramp && !m.ramp->empty()) return base * toon_ramp_eval(*m.ramp, level) * glm::mix(Color(1.f), in.tint, level);
+  if (m.ramp && !m.ramp->empty())
+    return base * toon_ramp_eval(*m.ramp, level) * glm::mix(Color(1.f), in.tint, level);
   return base * glm::mix(m.shadow_color, in.tint, toon_band_level(m, level));
 }
 

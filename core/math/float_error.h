@@ -36,8 +36,10 @@ inline Point3 offset_ray_origin(const Point3& p, const Vec3& p_error, const Norm
   Point3 po = p + offset;
   // Round away from p so the offset is not lost to rounding.
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0.f) po[i] = next_float_up(po[i]);
-    else if (offset[i] < 0.f) po[i] = next_float_down(po[i]);
+    if (offset[i] > 0.f)
+      po[i] = next_float_up(po[i]);
+    else if (offset[i] < 0.f)
+      po[i] = next_float_down(po[i]);
   }
   return po;
 }

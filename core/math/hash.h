@@ -12,8 +12,12 @@ inline uint32_t hash_u32(uint32_t v) {
   uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
   return (word >> 22u) ^ word;
 }
-inline uint32_t hash_combine(uint32_t a, uint32_t b) { return hash_u32(a ^ (hash_u32(b) + 0x9e3779b9u + (a << 6) + (a >> 2))); }
-inline uint32_t hash_combine(uint32_t a, uint32_t b, uint32_t c) { return hash_combine(hash_combine(a, b), c); }
+inline uint32_t hash_combine(uint32_t a, uint32_t b) {
+  return hash_u32(a ^ (hash_u32(b) + 0x9e3779b9u + (a << 6) + (a >> 2)));
+}
+inline uint32_t hash_combine(uint32_t a, uint32_t b, uint32_t c) {
+  return hash_combine(hash_combine(a, b), c);
+}
 inline uint32_t hash_combine(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
   return hash_combine(hash_combine(a, b, c), d);
 }

@@ -10,7 +10,9 @@ Transform Transform::from_matrix(const Mat4& mat) { return {mat, glm::inverse(ma
 Transform Transform::translate(const Vec3& t) {
   return {glm::translate(Mat4(1.f), t), glm::translate(Mat4(1.f), -t)};
 }
-Transform Transform::scale(const Vec3& s) { return {glm::scale(Mat4(1.f), s), glm::scale(Mat4(1.f), 1.f / s)}; }
+Transform Transform::scale(const Vec3& s) {
+  return {glm::scale(Mat4(1.f), s), glm::scale(Mat4(1.f), 1.f / s)};
+}
 Transform Transform::rotate(float degrees, const Vec3& axis) {
   const Mat4 r = glm::rotate(Mat4(1.f), glm::radians(degrees), glm::normalize(axis));
   return {r, glm::transpose(r)};

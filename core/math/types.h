@@ -28,7 +28,9 @@ inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 inline float luminance(const Color& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 inline float max_component(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
 inline bool is_black(const Color& c) { return c.r == 0.f && c.g == 0.f && c.b == 0.f; }
-inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool is_finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 inline float sqr(float x) { return x * x; }
 inline float safe_sqrt(float x) { return std::sqrt(glm::max(0.f, x)); }
 

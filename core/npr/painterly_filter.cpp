@@ -277,14 +277,17 @@ template <int N>
 bool kuwahara_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadBudget* pool,
                    const Cancel& cancel, RgbImage& out) {
   const std::vector<Tap<N>> taps = disc_taps<N>(table, radius);
-  return parallel_rows(source.height, pool, [&](int y) {
-    for (int x = 0; x < source.width; ++x) {
-      const Texel& centre = source.at(x, y);
-      SectorSums<N> sums;
-      for (const Tap<N>& tap : taps) sums.add(tap.w, source.clamped(x + tap.dx, y + tap.dy), centre);
-      out.at(x, y) = sums.combine(q, centre);
-    }
-  }, cancel);
+  return parallel_rows(
+      source.height, pool,
+      [&](int y) {
+        for (int x = 0; x < source.width; ++x) {
+          const Texel& centre = source.at(x, y);
+          SectorSums<N> sums;
+          for (const Tap<N>& tap : taps) sums.add(tap.w, source.clamped(x + tap.dx, y + tap.dy), centre);
+          out.at(x, y) = sums.combine(q, centre);
+        }
+      },
+      cancel);
 }
 
 // ---------------------------------------------------------------- anisotropic Kuwahara
@@ -396,17 +399,20 @@ Color filter_ellipse(const Source& source, int x, int y, const Ellipse& ellipse,
 }
 
 template <int N>
-bool anisotropic_rows(const Source& source, const SectorTable& table, float radius, float q, ThreadBudget* pool,
-                      const Cancel& cancel, RgbImage& out) {
+bool anisotropic_rows(const Source& source, const SectorTable& table, float radius, float q,
+                      ThreadBudget* pool, const Cancel& cancel, RgbImage& out) {
   const std::vector<Vec3> tensor = structure_tensor(source, pool);
   const Weights<N> centre_weights = table.weights<N>(Vec2(0.f));
-  return parallel_rows(source.height, pool, [&](int y) {
-    for (int x = 0; x < source.width; ++x) {
-      const Ellipse ellipse =
-          ellipse_from_tensor(tensor[size_t(y) * size_t(source.width) + size_t(x)], radius);
-      out.at(x, y) = filter_ellipse<N>(source, x, y, ellipse, table, centre_weights, q);
-    }
-  }, cancel);
+  return parallel_rows(
+      source.height, pool,
+      [&](int y) {
+        for (int x = 0; x < source.width; ++x) {
+          const Ellipse ellipse =
+              ellipse_from_tensor(tensor[size_t(y) * size_t(source.width) + size_t(x)], radius);
+          out.at(x, y) = filter_ellipse<N>(source, x, y, ellipse, table, centre_weights, q);
+        }
+      },
+      cancel);
 }
 
 int clamp_sectors(int sectors) { return std::clamp(sectors, 1, kMaxSectors); }
@@ -424,8 +430,8 @@ RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& par
   const Source source = prepare_source(image, pool);
   bool finished = false;
   with_sector_count(padded_sectors(sectors), [&](auto n) {
-    finished = kuwahara_rows<n()>(source, table, clamp_radius(params.radius), clamp_sharpness(params.sharpness),
-                                  pool, cancel, out);
+    finished = kuwahara_rows<n()>(source, table, clamp_radius(params.radius),
+                                  clamp_sharpness(params.sharpness), pool, cancel, out);
   });
   return finished ? out : RgbImage{};
 }

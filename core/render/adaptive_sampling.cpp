@@ -41,7 +41,8 @@ std::vector<TileSums> tile_sums(const Film& film, const TileGrid& grid, const Pi
 
 PixelWindow TileGrid::window(int tile) const {
   const int tx = tile % tiles_x(), ty = tile / tiles_x();
-  return {tx * tile_size, ty * tile_size, std::min((tx + 1) * tile_size, width), std::min((ty + 1) * tile_size, height)};
+  return {tx * tile_size, ty * tile_size, std::min((tx + 1) * tile_size, width),
+          std::min((ty + 1) * tile_size, height)};
 }
 
 std::vector<double> tile_errors(const Film& film, const TileGrid& grid, const PixelWindow& active) {

@@ -16,8 +16,9 @@ class PassDeadline {
  public:
   PassDeadline(RenderSession& session, double seconds) {
     if (seconds <= 0.0) return;
-    deadline_ = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                       std::chrono::duration<double>(seconds));
+    deadline_ =
+        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                               std::chrono::duration<double>(seconds));
     watcher_ = std::thread([this, &session] {
       std::unique_lock lock(mutex_);
       if (!wake_.wait_until(lock, deadline_, [this] { return stopped_; })) session.cancel();

@@ -63,7 +63,8 @@ void paint_highlight(std::vector<uint8_t>& rgba, const RgbImage& object_ids, int
       }
       bool edge = false;
       for (int d = 1; d <= std::max(thickness, 1) && !edge; ++d)
-        edge = !is_selected(x - d, y) || !is_selected(x + d, y) || !is_selected(x, y - d) || !is_selected(x, y + d);
+        edge = !is_selected(x - d, y) || !is_selected(x + d, y) || !is_selected(x, y - d) ||
+               !is_selected(x, y + d);
       if (!edge) continue;
       px[0] = rgb[0], px[1] = rgb[1], px[2] = rgb[2];
     }

@@ -126,7 +126,8 @@ void ExportJob::run(ExportRequest request) {
   std::vector<AovFile> aov_files;
   for (Aov a : request.aovs) aov_files.push_back({a, aov_path(request.output, a)});
   std::vector<PlannedOutput> planned = {{request.output.string(), request.output}};
-  if (request.denoise) planned.push_back({raw_image_path(request.output).string(), raw_image_path(request.output)});
+  if (request.denoise)
+    planned.push_back({raw_image_path(request.output).string(), raw_image_path(request.output)});
   for (const AovFile& a : aov_files) planned.push_back({a.file.string(), a.file});
   if (std::string problem = check_outputs(planned); !problem.empty()) return finish(std::move(problem));
   std::tie(request.scene.render.width, request.scene.render.height) = export_resolution(request);

@@ -28,9 +28,9 @@ struct ExportRequest {
   // Stop when the estimated relative error falls below; 0: none. Tiles below it stop
   // taking samples before that (adaptive sampling, core/render/adaptive_sampling.h).
   double noise_target = 0.0;
-  bool denoise = false;  // the image is denoised; the raw one is written as <stem>_raw<ext>
-  std::vector<Aov> aovs;      // written as "<stem>_<aov><ext>"
-  int threads = 0;            // 0: every hardware thread (export_threads())
+  bool denoise = false;   // the image is denoised; the raw one is written as <stem>_raw<ext>
+  std::vector<Aov> aovs;  // written as "<stem>_<aov><ext>"
+  int threads = 0;        // 0: every hardware thread (export_threads())
   // The export's resolution, leaving the document alone; 0 keeps the scene's. With one
   // side set, the other follows the scene's aspect.
   int width = 0, height = 0;

@@ -14,6 +14,7 @@ namespace inkray {
 // refers to (a mix's sides), square, `size` pixels a side, `spp` samples. Asset
 // paths resolve against the document's folder. A name not in `doc` gives a scene
 // whose sphere uses a missing material, which fails to compile with that name.
-SceneDesc material_preview_scene(const SceneDesc& doc, const std::string& material, int size = 128, int spp = 64);
+SceneDesc material_preview_scene(const SceneDesc& doc, const std::string& material, int size = 128,
+                                 int spp = 64);
 
 }  // namespace inkray

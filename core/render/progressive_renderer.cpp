@@ -111,7 +111,8 @@ uint64_t ProgressiveRenderer::generation() const {
   return generation_;
 }
 
-bool ProgressiveRenderer::wait_for_generation(uint64_t after, std::chrono::steady_clock::time_point deadline) const {
+bool ProgressiveRenderer::wait_for_generation(uint64_t after,
+                                              std::chrono::steady_clock::time_point deadline) const {
   std::unique_lock lock(mutex_);
   return published_.wait_until(lock, deadline, [&] { return generation_ > after; });
 }
@@ -168,7 +169,7 @@ void ProgressiveRenderer::run() {
       // a camera move or a material edit costs no rebuild of the geometry.
       CompileOptions options;
       options.cancel = Cancel(&superseded_);
-      options.stand_in_for_broken_graphs = true;  // one bad graph must not blank the viewport
+      options.stand_in_for_broken_graphs = true;   // one bad graph must not blank the viewport
       options.stand_in_for_missing_assets = true;  // nor a file that moved: it is drawn as a placeholder
       CompileResult compiled = session_.pool().run([&] { return compiler_.compile(*desc, options); });
       std::lock_guard lock(mutex_);
@@ -180,7 +181,8 @@ void ProgressiveRenderer::run() {
       warnings_.insert(warnings_.end(), compiled.warnings.begin(), compiled.warnings.end());
       // Line colours, the painterly filter and render limits are read when the film
       // is resolved: the samples so far stay, and the image is composited again.
-      keep_film = scene && !restart && compiled.changes.within({Stage::layout, Stage::resolve, Stage::limits});
+      keep_film =
+          scene && !restart && compiled.changes.within({Stage::layout, Stage::resolve, Stage::limits});
       scene = scene_ = compiled.scene;
       revision_ = revision;
       revision_time_ = revision_time;
@@ -189,7 +191,8 @@ void ProgressiveRenderer::run() {
     if (!scene) continue;
     const bool region_only = restart && !desc;  // set_region() alone asked for it
     if (reencode && (aovs_for(view).bits & ~aovs_.bits) != 0) restart = true;
-    if (restart && region_only && !region.empty() && session_.divisor() == 1 && aovs_for(view).bits == aovs_.bits) {
+    if (restart && region_only && !region.empty() && session_.divisor() == 1 &&
+        aovs_for(view).bits == aovs_.bits) {
       // A region over the full-resolution film: the pixels around it keep their samples.
       const int w = session_.film().width(), h = session_.film().height();
       session_.restart_region(int(std::floor(region.x0 * w)), int(std::floor(region.y0 * h)),
@@ -289,7 +292,8 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
   } else if (view.display == kDisplayNoise) {
     // Raw, so grey is proportional to the error (white = 100 % at 0 EV); the
     // exposure slider still applies to make small errors visible.
-    snap->rgba = encode_display(film.resolve_noise(), DisplayEncoding{view.encoding.exposure, ViewTransform::raw});
+    snap->rgba =
+        encode_display(film.resolve_noise(), DisplayEncoding{view.encoding.exposure, ViewTransform::raw});
   } else {
     if (base_denoised_ != view.denoise) base_current_ = false;
     if (!base_current_) {

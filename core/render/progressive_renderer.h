@@ -65,13 +65,13 @@ struct ViewportSnapshot {
   std::vector<uint8_t> rgba;
   RenderStats stats;
   std::vector<ErrorSample> error_curve;  // full-resolution passes of this revision
-  bool finished = false;                  // a limit was reached; the worker idles
-  uint64_t revision = 0;                  // the submit() this image shows
+  bool finished = false;                 // a limit was reached; the worker idles
+  uint64_t revision = 0;                 // the submit() this image shows
   // Which accumulation of samples this image shows: it changes whenever the film
   // restarts (a preview, a new document that needs new samples), and stays across
   // edits that re-composite the samples already taken (docs/architecture.md, "Stages").
   uint64_t accumulation = 0;
-  double submit_to_publish_ms = 0.0;      // latency from that submit() to this snapshot
+  double submit_to_publish_ms = 0.0;  // latency from that submit() to this snapshot
   // The final image is denoised: from the film at `denoised_spp` (the denoiser runs
   // again only when its cost is small beside the passes since), with this estimated
   // relative error (Denoised::relative_error); stats.relative_error stays the raw one.
@@ -93,7 +93,7 @@ class ProgressiveRenderer {
   // Re-encodes, compositing the lines again; re-renders only for a missing AOV.
   void set_view(const ViewportView& view);
   void set_limits(const ViewportLimits& limits);
-  void set_region(const RegionRect& region);    // restarts at full resolution inside the region
+  void set_region(const RegionRect& region);  // restarts at full resolution inside the region
   void set_paused(bool paused);
   bool paused() const;
 

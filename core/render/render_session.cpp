@@ -92,8 +92,8 @@ void RenderSession::reset_adaptive() {
 void RenderSession::update_adaptive() {
   // Decided with both halves holding the same passes, once every tile has the minimum.
   if (!adaptive_.on() || stats_.passes % 2 != 0 || stats_.spp < std::max(adaptive_.min_spp, 2u)) return;
-  stats_.active_tiles =
-      uint32_t(stop_converged_tiles(*film_, tile_grid(), active_window(), adaptive_, line_pixels_, tile_active_));
+  stats_.active_tiles = uint32_t(
+      stop_converged_tiles(*film_, tile_grid(), active_window(), adaptive_, line_pixels_, tile_active_));
 }
 
 void RenderSession::restart_region(int x0, int y0, int x1, int y1) {
@@ -156,7 +156,8 @@ bool RenderSession::render_pass() {
   if (tile_active_.size() != size_t(tiles)) reset_adaptive();
   std::fill(worker_rays_.begin(), worker_rays_.end(), 0);
   pool_.parallel_for(tiles, [&](int tile, int worker) {
-    if (tiles_done_[size_t(tile)] || !tile_active_[size_t(tile)] || cancelled_.load(std::memory_order_relaxed))
+    if (tiles_done_[size_t(tile)] || !tile_active_[size_t(tile)] ||
+        cancelled_.load(std::memory_order_relaxed))
       return;
     render_tile(tile, worker, pass);
     tiles_done_[size_t(tile)] = 1;

@@ -111,10 +111,11 @@ class RenderSession {
   // Pixels whose probes the region's line map reads, beyond the region itself:
   // in a probe pass they trace their probe's lines (only), as in a render of the
   // whole film. Calls f(x, y) for each in the tile.
-  template <class F> void for_margin_pixels(int tile, uint32_t pass, F&& f) const;
+  template <class F>
+  void for_margin_pixels(int tile, uint32_t pass, F&& f) const;
   PixelWindow tile_window(int tile) const;
   TileGrid tile_grid() const { return {film_->width(), film_->height(), kTileSize}; }
-  void reset_adaptive();  // every tile active
+  void reset_adaptive();   // every tile active
   void update_adaptive();  // after a pass
   int tile_count() const;
   PixelWindow active_window() const;  // the region, or the whole film
@@ -128,13 +129,13 @@ class RenderSession {
   ThreadBudget pool_;
   std::shared_ptr<const RenderScene> scene_;
   std::unique_ptr<Film> film_;
-  LineSetup lines_;  // what the scene's outlines ask of every sample
+  LineSetup lines_;                     // what the scene's outlines ask of every sample
   std::vector<LinePixel> line_pixels_;  // per film pixel: adaptive line sampling's state
   uint32_t first_pass_ = 0;
   RenderStats stats_;
   std::atomic<bool> cancelled_{false};
   std::vector<uint64_t> worker_rays_;  // one slot per worker: no shared counter on the hot path
-  std::vector<uint8_t> tiles_done_;  // tiles of the pass in progress already in the film
+  std::vector<uint8_t> tiles_done_;    // tiles of the pass in progress already in the film
   AdaptiveSampling adaptive_;
   std::vector<uint8_t> tile_active_;  // per tile: still taking samples
   int divisor_ = 1;

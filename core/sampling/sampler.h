@@ -21,7 +21,9 @@ class Sampler {
   Vec2 get_pair(uint32_t pair) const { return owen_sobol_2d(index_, pixel_seed_, pair); }
   // The same pixel's value for another sample index: a loop over a pixel's
   // points hashes the pixel once.
-  Vec2 get_pair_at(uint32_t sample_index, uint32_t pair) const { return owen_sobol_2d(sample_index, pixel_seed_, pair); }
+  Vec2 get_pair_at(uint32_t sample_index, uint32_t pair) const {
+    return owen_sobol_2d(sample_index, pixel_seed_, pair);
+  }
   // An unstratified value from a counter-based hash, for decisions that gain
   // nothing from stratification (Russian roulette).
   float get_hashed(uint32_t dimension) const {

@@ -87,8 +87,10 @@ inline uint32_t mix_seed(uint32_t x) {
 inline Vec2 owen_sobol_2d(uint32_t index, uint32_t pixel_seed, uint32_t pair) {
   const uint32_t pair_seed = mix_seed(pixel_seed ^ (pair * 0x9e3779b9u));
   const uint32_t shuffled = reverse_bits(laine_karras_permutation(reverse_bits(index), pair_seed));
-  const uint32_t x = reverse_bits(laine_karras_permutation(sobol_dim0_reversed(shuffled), mix_seed(pair_seed ^ 0x68bc21ebu)));
-  const uint32_t y = reverse_bits(laine_karras_permutation(sobol_dim1_reversed(shuffled), mix_seed(pair_seed ^ 0x02e5be93u)));
+  const uint32_t x = reverse_bits(
+      laine_karras_permutation(sobol_dim0_reversed(shuffled), mix_seed(pair_seed ^ 0x68bc21ebu)));
+  const uint32_t y = reverse_bits(
+      laine_karras_permutation(sobol_dim1_reversed(shuffled), mix_seed(pair_seed ^ 0x02e5be93u)));
   return {u32_to_unit_float(x), u32_to_unit_float(y)};
 }
 

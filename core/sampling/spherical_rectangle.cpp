@@ -31,7 +31,9 @@ std::optional<SphericalRectangle> spherical_rectangle(const Point3& from, const 
   const D3 v00(r.x0, r.y0, r.z0), v01(r.x0, r.y1, r.z0), v10(r.x1, r.y0, r.z0), v11(r.x1, r.y1, r.z0);
   const D3 n0 = glm::normalize(glm::cross(v00, v10)), n1 = glm::normalize(glm::cross(v10, v11));
   const D3 n2 = glm::normalize(glm::cross(v11, v01)), n3 = glm::normalize(glm::cross(v01, v00));
-  const auto angle = [](const D3& a, const D3& b) { return std::acos(std::clamp(-glm::dot(a, b), -1.0, 1.0)); };
+  const auto angle = [](const D3& a, const D3& b) {
+    return std::acos(std::clamp(-glm::dot(a, b), -1.0, 1.0));
+  };
   const double g0 = angle(n0, n1), g1 = angle(n1, n2), g2 = angle(n2, n3), g3 = angle(n3, n0);
   r.b0 = n0.z;
   r.b1 = n2.z;

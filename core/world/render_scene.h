@@ -29,8 +29,8 @@ struct LineOverride {
 struct RenderObject {
   std::string name;
   uint32_t material = 0;
-  int light = -1;        // index into RenderScene::lights when the object emits and is sampled
-  uint32_t source = 0;   // index into SceneDesc::objects
+  int light = -1;              // index into RenderScene::lights when the object emits and is sampled
+  uint32_t source = 0;         // index into SceneDesc::objects
   uint32_t line_material = 0;  // material boundaries are drawn where this changes
   LineOverride lines;
   Transform to_object;  // world to the object's own space: where graph textures are fixed
@@ -47,7 +47,7 @@ struct RenderObject {
 struct RenderScene {
   Camera camera;
   RenderSettings settings;
-  EmbreeScene geometry;               // shape i belongs to objects[i]
+  EmbreeScene geometry;  // shape i belongs to objects[i]
   std::vector<RenderObject> objects;
   std::vector<Material> materials;
   std::vector<std::string> material_names;
@@ -78,8 +78,8 @@ inline uint32_t crease_patch(const RenderScene& scene, uint32_t object, uint32_t
 
 // What a material graph reads at a hit on one of the scene's objects, seen from `wo`
 // at `depth` along the path (the light inputs are the integrator's to gather).
-inline ShadingPoint scene_shading_point(const RenderScene& scene, const SurfaceInteraction& si, const Vec3& wo,
-                                       float depth) {
+inline ShadingPoint scene_shading_point(const RenderScene& scene, const SurfaceInteraction& si,
+                                        const Vec3& wo, float depth) {
   const RenderObject& object = scene.objects[si.object];
   ShadingPoint sp = shading_point(si, wo);
   sp.depth = depth;

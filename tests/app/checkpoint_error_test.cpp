@@ -16,10 +16,11 @@ using testing::ScratchFolder;
 
 // The Cornell box, tiny, checkpointed after every pass, written to `output`.
 std::string render_checkpointed(const std::string& extra, const fs::path& output, int* exit_code) {
-  return testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render " + INKRAY_SOURCE_DIR +
-                                  "/scenes/cornell.json --width 16 --height 16 --spp 8 -q --checkpoint 0.000001" +
-                                  extra + " -o " + output.string(),
-                              exit_code);
+  return testing::run_command(
+      std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render " + INKRAY_SOURCE_DIR +
+          "/scenes/cornell.json --width 16 --height 16 --spp 8 -q --checkpoint 0.000001" + extra + " -o " +
+          output.string(),
+      exit_code);
 }
 
 TEST(CheckpointError, AFailedCheckpointFailsTheRunButTheImageIsWritten) {

@@ -14,7 +14,6 @@
 #include <sstream>
 #include <string>
 
-
 namespace inkray {
 namespace {
 
@@ -27,7 +26,8 @@ struct RunResult {
 
 RunResult run(const std::string& program, const std::string& args) {
   RunResult r;
-  r.output = testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/" + program + " " + args, &r.exit_code);
+  r.output =
+      testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/" + program + " " + args, &r.exit_code);
   return r;
 }
 
@@ -112,7 +112,8 @@ TEST_F(FinalRender, DenoisedSlicesMergeToTheDenoisedImageOfOneRun) {
 // Slices after the first read the line decisions written once by --decide-lines; one
 // of another render is refused with one line.
 TEST_F(FinalRender, SlicesReadingLineDecisionsMergeToTheImageOfOneRun) {
-  ASSERT_EQ(render("--spp 40 -o " + path("one.pfm") + " --aov outline=" + path("one_lines.pfm")).exit_code, 0);
+  ASSERT_EQ(render("--spp 40 -o " + path("one.pfm") + " --aov outline=" + path("one_lines.pfm")).exit_code,
+            0);
   RunResult r = render("--decide-lines " + path("lines.bin"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir_ / "lines.bin"));

@@ -28,7 +28,8 @@ struct RunResult {
 
 RunResult run_render(const std::string& args) {
   RunResult r;
-  r.output = testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render " + args, &r.exit_code);
+  r.output =
+      testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render " + args, &r.exit_code);
   return r;
 }
 
@@ -36,12 +37,15 @@ class InkrayRender : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("inkray_render_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("inkray_render_test_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string scene(const std::string& name) const { return std::string(INKRAY_SOURCE_DIR) + "/scenes/" + name; }
+  std::string scene(const std::string& name) const {
+    return std::string(INKRAY_SOURCE_DIR) + "/scenes/" + name;
+  }
   std::filesystem::path dir_;
 };
 
@@ -77,7 +81,8 @@ TEST_F(InkrayRender, TimeLimitCoversBuildingTheScene) {
   const auto out = dir_ / "heavy.png";
   const RunResult r = run_render(file.string() + " -o " + out.string() + " --time 0.3 -q");
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("heavy.json: the time limit of 0.3 s ran out while building the scene"), std::string::npos)
+  EXPECT_NE(r.output.find("heavy.json: the time limit of 0.3 s ran out while building the scene"),
+            std::string::npos)
       << r.output;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
@@ -93,7 +98,8 @@ TEST_F(InkrayRender, TimeLimitLeavesRoomForThePainterlyFilter) {
   const auto out = dir_ / "filter.png";
   RunResult r = run_render(file.string() + " -o " + out.string() + " --time 2 -q");
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("filter.json: the painterly filter alone takes about"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("filter.json: the painterly filter alone takes about"), std::string::npos)
+      << r.output;
   EXPECT_FALSE(std::filesystem::exists(out));
   // Smaller, the same filter fits, and the image is written.
   r = run_render(file.string() + " -o " + out.string() + " --time 4 --width 96 --height 54 -q");
@@ -112,7 +118,8 @@ TEST_F(InkrayRender, TimeLimitCutsTheFirstPassAndWritesNothing) {
   const auto out = dir_ / "room.png";
   const RunResult r = run_render(file.string() + " -o " + out.string() + " --time 0.5 -q");
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("ran out while rendering the first sample of every pixel"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("ran out while rendering the first sample of every pixel"), std::string::npos)
+      << r.output;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
@@ -129,9 +136,9 @@ TEST_F(InkrayRender, MemoryLimitRefusesAScenePredictedToExceedIt) {
 
 TEST_F(InkrayRender, RendersImageAndAovsAndPrintsErrorTable) {
   const auto out = dir_ / "c.pfm";
-  const RunResult r = run_render(scene("cornell.json") + " -o " + out.string() + " --spp 4 --width 40 --height 40 " +
-                                 "--aov normal=" + (dir_ / "n.png").string() + " --aov depth=" +
-                                 (dir_ / "z.exr").string());
+  const RunResult r =
+      run_render(scene("cornell.json") + " -o " + out.string() + " --spp 4 --width 40 --height 40 " +
+                 "--aov normal=" + (dir_ / "n.png").string() + " --aov depth=" + (dir_ / "z.exr").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   RgbImage img;
   std::string error;
@@ -188,8 +195,9 @@ TEST_F(InkrayRender, TimeLimitStopsBeforeSpp) {
 // and the samples they hold (the README's example, at a small size).
 TEST_F(InkrayRender, TimeLimitKeepsTimeForTheDenoiser) {
   const auto out = dir_ / "clean.png";
-  const RunResult r = run_render(scene("cornell.json") + " -o " + out.string() +
-                                 " --spp 100000 --time 1.5 --denoise --noise-threshold 0.02 --width 96 --height 72");
+  const RunResult r =
+      run_render(scene("cornell.json") + " -o " + out.string() +
+                 " --spp 100000 --time 1.5 --denoise --noise-threshold 0.02 --width 96 --height 72");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(out));
   EXPECT_TRUE(std::filesystem::exists(dir_ / "clean_raw.png"));
@@ -206,7 +214,8 @@ TEST_F(InkrayRender, TimeLimitKeepsTimeForThePainterlyFilterAndTheDenoiser) {
     "lights": [{"name": "sun", "type": "directional"}],
     "objects": [{"name": "ball", "material": "m", "shape": {"type": "sphere"}}]})";
   const auto out = dir_ / "paint.png";
-  const RunResult r = run_render(file.string() + " -o " + out.string() + " --spp 100000 --time 1.5 --denoise");
+  const RunResult r =
+      run_render(file.string() + " -o " + out.string() + " --spp 100000 --time 1.5 --denoise");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(out));
   EXPECT_TRUE(std::filesystem::exists(dir_ / "paint_raw.png"));
@@ -218,19 +227,20 @@ TEST_F(InkrayRender, BadArgumentsGiveOneLineAndExitTwo) {
     std::string args, expected;
   };
   const std::string png = " -o " + (dir_ / "x.png").string();
-  for (const Case& c : {Case{"", "no scene file given"}, Case{scene("cornell.json"), "no output file given"},
-                        Case{scene("cornell.json") + png + " --spp 0", "--spp: expected an integer in [1, 1048576]"},
-                        Case{scene("cornell.json") + png + " --spp 12x", "got \"12x\""},
-                        Case{scene("cornell.json") + png + " --threads", "--threads: missing value"},
-                        Case{scene("cornell.json") + png + " --time -1", "--time: expected seconds"},
-                        Case{scene("cornell.json") + png + " --aov colour=a.png", "--aov: expected NAME=FILE"},
-                        Case{scene("cornell.json") + png + " --frobnicate", "unknown option \"--frobnicate\""},
-                        Case{scene("cornell.json") + " -o out.bmp", "unknown image format"},
-                        Case{scene("cornell.json") + png + " --noise-threshold 0", "--noise-threshold: expected"},
-                        Case{scene("cornell.json") + png + " --min-spp 8", "add --noise-threshold"},
-                        Case{scene("cornell.json") + " --samples 0 4 -o p.exr --noise-threshold 0.1",
-                             "adaptive sampling is for renders on one machine"},
-                        Case{scene("cornell.json") + " -o /nonexistent/dir/a.png", "does not exist"}}) {
+  for (const Case& c :
+       {Case{"", "no scene file given"}, Case{scene("cornell.json"), "no output file given"},
+        Case{scene("cornell.json") + png + " --spp 0", "--spp: expected an integer in [1, 1048576]"},
+        Case{scene("cornell.json") + png + " --spp 12x", "got \"12x\""},
+        Case{scene("cornell.json") + png + " --threads", "--threads: missing value"},
+        Case{scene("cornell.json") + png + " --time -1", "--time: expected seconds"},
+        Case{scene("cornell.json") + png + " --aov colour=a.png", "--aov: expected NAME=FILE"},
+        Case{scene("cornell.json") + png + " --frobnicate", "unknown option \"--frobnicate\""},
+        Case{scene("cornell.json") + " -o out.bmp", "unknown image format"},
+        Case{scene("cornell.json") + png + " --noise-threshold 0", "--noise-threshold: expected"},
+        Case{scene("cornell.json") + png + " --min-spp 8", "add --noise-threshold"},
+        Case{scene("cornell.json") + " --samples 0 4 -o p.exr --noise-threshold 0.1",
+             "adaptive sampling is for renders on one machine"},
+        Case{scene("cornell.json") + " -o /nonexistent/dir/a.png", "does not exist"}}) {
     const RunResult r = run_render(c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
@@ -256,8 +266,9 @@ TEST_F(InkrayRender, SceneErrorsNameTheFileAndWriteNothing) {
 TEST_F(InkrayRender, HelpDocumentsEveryOption) {
   const RunResult r = run_render("--help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* opt : {"--output", "--spp", "--time", "--threads", "--width", "--height", "--seed", "--aov",
-                          "--write-scene", "--memory-limit", "--denoise", "--noise-threshold", "--min-spp"})
+  for (const char* opt :
+       {"--output", "--spp", "--time", "--threads", "--width", "--height", "--seed", "--aov", "--write-scene",
+        "--memory-limit", "--denoise", "--noise-threshold", "--min-spp"})
     EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
 

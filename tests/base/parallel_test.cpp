@@ -40,7 +40,8 @@ TEST(ThreadBudget, CapsTheThreadsOfWhatItRuns) {
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<int> elsewhere{0};
   const int result = one.run([&] {
-    parallel_for_chunks(10000, 10, [&](size_t, size_t) { elsewhere += std::this_thread::get_id() != caller; });
+    parallel_for_chunks(10000, 10,
+                        [&](size_t, size_t) { elsewhere += std::this_thread::get_id() != caller; });
     return 42;
   });
   EXPECT_EQ(result, 42);
@@ -64,7 +65,8 @@ TEST(ParallelForChunks, CoversTheRangeOnceInChunksOfAtMostGrain) {
 TEST(ParallelForChunks, NoChunkStartsOnceCancelled) {
   std::atomic<bool> flag{true};
   std::atomic<int> calls{0};
-  parallel_for_chunks(1000, 10, [&](size_t, size_t) { ++calls; }, Cancel(&flag));
+  parallel_for_chunks(
+      1000, 10, [&](size_t, size_t) { ++calls; }, Cancel(&flag));
   EXPECT_EQ(calls.load(), 0);
 }
 

@@ -58,7 +58,8 @@ TEST(Camera, ThinLensRaysMeetOnTheFocusPlane) {
   for (int i = 0; i < 50; ++i) {
     const Ray r = cam.generate_ray({30.f, 70.f}, {rng.next_float(), rng.next_float()});
     // Distance along the ray to the plane at focus_distance in front of the eye.
-    const float t = glm::dot(d.look_from + forward * d.focus_distance - r.o, forward) / glm::dot(r.d, forward);
+    const float t =
+        glm::dot(d.look_from + forward * d.focus_distance - r.o, forward) / glm::dot(r.d, forward);
     const Point3 p = r.o + t * r.d;
     if (i == 0) first = p;
     EXPECT_LT(glm::length(p - first), 1e-4f);

@@ -68,7 +68,8 @@ struct Compiled {
 TEST(AssetCache, EditsOpenNoFile) {
   Compiled c;
   SceneDesc& d = c.scene;
-  EXPECT_EQ(c.opened.size(), 5u) << "the first compile reads the mesh, the image (size and pixels) and the brush";
+  EXPECT_EQ(c.opened.size(), 5u)
+      << "the first compile reads the mesh, the image (size and pixels) and the brush";
   c.opened.clear();
 
   std::vector<std::pair<std::string, std::function<void(SceneDesc&)>>> edits = {

@@ -56,7 +56,8 @@ TEST(ClosureInputs, ToonSettingsLandInTheirOwnMember) {
             } else {
               expected.*(r.member) = Color(0.375f, 0.5f, 0.625f);
             }
-            EXPECT_TRUE(static_cast<const ToonParams&>(std::get<ToonMaterial>(m)) == expected) << r.param.name;
+            EXPECT_TRUE(static_cast<const ToonParams&>(std::get<ToonMaterial>(m)) == expected)
+                << r.param.name;
             ++checked;
           }
         };

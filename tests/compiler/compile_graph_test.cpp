@@ -93,9 +93,10 @@ TEST(GraphChecks, EveryProblemIsNamedWithItsPath) {
   {
     GraphDesc g = toon_graph();
     g.links[1].input = "colour";
-    EXPECT_NE(errors_of(g).find("links[1].input: nodes[2] \"toon\" (toon) has no input \"colour\" (inputs: color, "
-                                "shadow_color,"),
-              std::string::npos);
+    EXPECT_NE(
+        errors_of(g).find("links[1].input: nodes[2] \"toon\" (toon) has no input \"colour\" (inputs: color, "
+                          "shadow_color,"),
+        std::string::npos);
   }
   {
     GraphDesc g = toon_graph();

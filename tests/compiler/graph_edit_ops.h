@@ -39,16 +39,26 @@ class ByteStream {
   // editor must refuse (NaN, infinities) or clamp (1e30).
   float number() {
     switch (byte() % 12) {
-      case 0: return 0.f;
-      case 1: return 1.f;
-      case 2: return -1.f;
-      case 3: return 1e30f;
-      case 4: return -1e30f;
-      case 5: return std::numeric_limits<float>::quiet_NaN();
-      case 6: return std::numeric_limits<float>::infinity();
-      case 7: return float(byte()) / 255.f;
-      case 8: return float(byte()) * 4.f - 512.f;
-      case 9: return 1e9f;
+      case 0:
+        return 0.f;
+      case 1:
+        return 1.f;
+      case 2:
+        return -1.f;
+      case 3:
+        return 1e30f;
+      case 4:
+        return -1e30f;
+      case 5:
+        return std::numeric_limits<float>::quiet_NaN();
+      case 6:
+        return std::numeric_limits<float>::infinity();
+      case 7:
+        return float(byte()) / 255.f;
+      case 8:
+        return float(byte()) * 4.f - 512.f;
+      case 9:
+        return 1e9f;
       default: {
         std::uint32_t bits = 0;
         for (int i = 0; i < 4; ++i) bits = bits << 8 | byte();
@@ -108,8 +118,12 @@ struct SetParam {
           field = c;
           break;
         }
-        case 1: field = CheckerTextureDesc{}; break;
-        default: field = ImageTextureDesc{kImagePaths[in->pick(2)]}; break;
+        case 1:
+          field = CheckerTextureDesc{};
+          break;
+        default:
+          field = ImageTextureDesc{kImagePaths[in->pick(2)]};
+          break;
       }
     } else if constexpr (std::is_same_v<F, std::string>) {
       if (p.kind == ParamKind::path) field = kImagePaths[in->pick(std::size(kImagePaths))];
@@ -172,7 +186,9 @@ inline void apply_edit(GraphDesc& g, ByteStream& in) {
       (void)add_node(g, types[in.pick(types.size())], coordinate(), coordinate());
       break;
     }
-    case 2: (void)remove_nodes(g, pick_nodes(g, in)); break;
+    case 2:
+      (void)remove_nodes(g, pick_nodes(g, in));
+      break;
     case 3:
     case 4:
     case 5: {  // a link dragged from an output to an input; check_link is what the editor asks first
@@ -180,12 +196,15 @@ inline void apply_edit(GraphDesc& g, ByteStream& in) {
       const GraphNodeDesc* f = find_node(g, from);
       const GraphNodeDesc* t = find_node(g, to);
       std::string output = "closure", input = "surface";
-      if (f && !node_outputs(f->data).empty()) output = std::string(node_outputs(f->data)[in.pick(node_outputs(f->data).size())].name);
-      if (t && !node_inputs(t->data).empty()) input = std::string(node_inputs(t->data)[in.pick(node_inputs(t->data).size())].name);
+      if (f && !node_outputs(f->data).empty())
+        output = std::string(node_outputs(f->data)[in.pick(node_outputs(f->data).size())].name);
+      if (t && !node_inputs(t->data).empty())
+        input = std::string(node_inputs(t->data)[in.pick(node_inputs(t->data).size())].name);
       if (in.byte() % 32 == 0) input = "no_such_input";
       const bool allowed = !check_link(g, from, output, to, input);
       const bool linked = !connect(g, from, output, to, input);
-      if (allowed != linked) throw std::logic_error("check_link and connect disagree on " + from + " -> " + to);
+      if (allowed != linked)
+        throw std::logic_error("check_link and connect disagree on " + from + " -> " + to);
       break;
     }
     case 6: {
@@ -213,7 +232,9 @@ inline void apply_edit(GraphDesc& g, ByteStream& in) {
           n.data);
       break;
     }
-    case 10: move_nodes(g, pick_nodes(g, in), coordinate(), coordinate()); break;
+    case 10:
+      move_nodes(g, pick_nodes(g, in), coordinate(), coordinate());
+      break;
     case 11:
       if (room) (void)duplicate_nodes(g, pick_nodes(g, in), coordinate(), coordinate());
       break;
@@ -242,7 +263,8 @@ inline void apply_edit(GraphDesc& g, ByteStream& in) {
         const std::optional<NodeVariant> node = make_node(types[in.pick(types.size())]);
         std::visit(
             [&]<class T>(const T& d) {
-              if constexpr (std::is_constructible_v<MaterialVariant, T>) g = graph_from_material(MaterialVariant(d));
+              if constexpr (std::is_constructible_v<MaterialVariant, T>)
+                g = graph_from_material(MaterialVariant(d));
             },
             *node);
       } else {
@@ -312,7 +334,8 @@ struct TestHits {
     const Vec3 p[3] = {Vec3(0.2f, 0.5f, 1.f), Vec3(-40.f, 7.f, 3.f), Vec3(1e6f, -3e5f, 2e4f)};
     const Vec3 n[3] = {Vec3(0.f, 0.f, 1.f), Vec3(0.f, 1.f, 0.f), glm::normalize(Vec3(1.f, 1.f, 1.f))};
     const Vec2 uv[3] = {Vec2(0.25f, 0.75f), Vec2(0.f, 1.f), Vec2(-3.5f, 17.25f)};
-    const Vec3 wo[3] = {glm::normalize(Vec3(0.f, 0.6f, 0.8f)), Vec3(0.f, -1.f, 0.f), glm::normalize(Vec3(1.f, 0.f, 0.f))};
+    const Vec3 wo[3] = {glm::normalize(Vec3(0.f, 0.6f, 0.8f)), Vec3(0.f, -1.f, 0.f),
+                        glm::normalize(Vec3(1.f, 0.f, 0.f))};
     for (int k = 0; k < 3; ++k) {
       si[k].p = p[k];
       si[k].ng = si[k].ns = n[k];
@@ -338,7 +361,8 @@ inline std::string evaluation_problem(const ShaderProgram& program) {
     run_shader(program, sp, registers);
     for (int r = 0; r < program.register_count && r < kMaxShaderRegisters; ++r)
       for (int c = 0; c < 3; ++c)
-        if (!std::isfinite(registers[size_t(r)][c])) return "register " + std::to_string(r) + " is not finite";
+        if (!std::isfinite(registers[size_t(r)][c]))
+          return "register " + std::to_string(r) + " is not finite";
     for (const float u : {0.f, 0.3f, 0.7f, 0.9999f}) {
       Material scratch;
       const ResolvedMaterial picked = run_graph(program, sp, u, scratch);
@@ -347,14 +371,17 @@ inline std::string evaluation_problem(const ShaderProgram& program) {
         if (!program.closures.empty()) return "a graph with a surface resolved to none";
         continue;
       }
-      if (std::holds_alternative<MixMaterial>(*picked.material) || std::holds_alternative<GraphMaterial>(*picked.material))
+      if (std::holds_alternative<MixMaterial>(*picked.material) ||
+          std::holds_alternative<GraphMaterial>(*picked.material))
         return "a graph resolved to a mix or a graph";
       for (const float v : material_numbers(*picked.material))
         if (!std::isfinite(v) || v < 0.f)
           return "the surface picked at u " + std::to_string(u) + " holds " + std::to_string(v);
     }
     const SurfaceOverrides o = shader_overrides(program, sp);
-    const auto bad = [](const Vec3& v) { return !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z); };
+    const auto bad = [](const Vec3& v) {
+      return !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z);
+    };
     if ((o.line_color && bad(*o.line_color)) || (o.stroke_color && bad(*o.stroke_color)) ||
         (o.line_width && !std::isfinite(*o.line_width)))
       return "an output override is not finite";
@@ -369,7 +396,8 @@ struct CompileOutcome {
 
 // Compiles the graph: either a program whose values are finite, or no program and
 // messages; never an exception, never an empty message.
-inline CompileOutcome compile_and_check(const GraphDesc& g, const std::filesystem::path& base, AssetCache& assets) {
+inline CompileOutcome compile_and_check(const GraphDesc& g, const std::filesystem::path& base,
+                                        AssetCache& assets) {
   CompileOutcome out;
   std::vector<std::string> errors;
   try {
@@ -401,7 +429,8 @@ inline std::string round_trip_problem(const GraphDesc& g, const std::filesystem:
   scene.materials.push_back({"graph", g, {}});
   const std::string first = scene_to_json(scene).dump();
   const SceneLoadResult read = parse_scene(first, base, "graph.json", ReadFor::editing);
-  if (!read.scene) return "a compiled graph does not read back: " + (read.errors.empty() ? "" : read.errors.front());
+  if (!read.scene)
+    return "a compiled graph does not read back: " + (read.errors.empty() ? "" : read.errors.front());
   const std::string second = scene_to_json(*read.scene).dump();
   if (second != first) return "a compiled graph is written differently after reading it back";
   return {};

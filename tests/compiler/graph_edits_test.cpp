@@ -30,11 +30,12 @@ TEST(GraphEdits, TenThousandRandomEditsCompileOrAreRefusedWithMessages) {
     if (step % kStepsPerStart == 0) g = starts[size_t(step / kStepsPerStart) % starts.size()];
     ASSERT_NO_THROW(graph_ops::apply_edit(g, in)) << "step " << step;
     const graph_ops::CompileOutcome c = graph_ops::compile_and_check(g, kBase, assets);
-    ASSERT_EQ(c.problem, "") << "step " << step << "\n" << copy_nodes(g, [&] {
-      std::vector<std::string> ids;
-      for (const GraphNodeDesc& n : g.nodes) ids.push_back(n.id);
-      return ids;
-    }());
+    ASSERT_EQ(c.problem, "") << "step " << step << "\n"
+                             << copy_nodes(g, [&] {
+                                  std::vector<std::string> ids;
+                                  for (const GraphNodeDesc& n : g.nodes) ids.push_back(n.id);
+                                  return ids;
+                                }());
     (c.program ? compiled : refused) += 1;
     // Saving and opening again is dearer than compiling: every tenth compiled graph.
     if (c.program && compiled % 10 == 0) {

@@ -21,7 +21,8 @@ using namespace inkray::testing;
 using graph_ops::compile_and_check;
 using graph_ops::material_numbers;
 
-const std::filesystem::path kBase = std::filesystem::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid";
+const std::filesystem::path kBase =
+    std::filesystem::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid";
 
 template <class T>
 constexpr bool kIsClosure = std::is_constructible_v<MaterialVariant, T>;  // a plain material's description
@@ -36,7 +37,8 @@ NodeVariant usable_node() {
 
 std::vector<NodeVariant> all_node_types() {
   std::vector<NodeVariant> nodes;
-  for_each_alternative<NodeVariant>([&]<class T>(std::type_identity<T>) { nodes.push_back(usable_node<T>()); });
+  for_each_alternative<NodeVariant>(
+      [&]<class T>(std::type_identity<T>) { nodes.push_back(usable_node<T>()); });
   return nodes;
 }
 
@@ -76,7 +78,13 @@ TEST(GraphInputs, EveryInputOfEveryNodeCompilesUnlinked) {
   for (const NodeVariant& node : all_node_types()) {
     const size_t outputs = std::max<size_t>(node_outputs(node).size(), 1);
     std::vector<SocketInfo> inputs = node_inputs(node);
-    if (inputs.empty()) inputs.push_back(SocketInfo{.name = "(none)", .type = SocketType::float_value, .doc = {}, .implicit = Implicit::none, .has_value = false, .param = {}});  // a node without inputs still compiles
+    if (inputs.empty())
+      inputs.push_back(SocketInfo{.name = "(none)",
+                                  .type = SocketType::float_value,
+                                  .doc = {},
+                                  .implicit = Implicit::none,
+                                  .has_value = false,
+                                  .param = {}});  // a node without inputs still compiles
     for (const SocketInfo& input : inputs) {
       for (size_t o = 0; o < outputs; ++o) {
         const GraphDesc g = reaching_output(node, o, input.name);
@@ -102,8 +110,8 @@ TEST(GraphInputs, EveryInputOfEveryNodeCompilesFromEveryOutputThatFits) {
           add(g, "src", source);
           link(g, "src", std::string(output.name), "n", std::string(input.name));
           const graph_ops::CompileOutcome c = compile_and_check(g, kBase, assets);
-          const std::string what = std::string(node_type_name(source)) + "." + std::string(output.name) + " -> " +
-                                   describe(node, input.name);
+          const std::string what = std::string(node_type_name(source)) + "." + std::string(output.name) +
+                                   " -> " + describe(node, input.name);
           ++cases;
           if (socket_converts(output.type, input.type)) {
             EXPECT_TRUE(c.program) << what << " does not compile";
@@ -139,7 +147,8 @@ TEST(GraphInputs, AnUnlinkedClosureInputIsTheNodesOwnValue) {
       plain.materials[0].data = T{};
       const CompileResult compiled = compile_scene(plain);
       ASSERT_TRUE(compiled.scene) << T::type_name;
-      EXPECT_EQ(resolved_numbers(*c.program), material_numbers(compiled.scene->materials.at(0))) << T::type_name;
+      EXPECT_EQ(resolved_numbers(*c.program), material_numbers(compiled.scene->materials.at(0)))
+          << T::type_name;
     }
   });
 }

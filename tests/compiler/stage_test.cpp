@@ -40,7 +40,10 @@ struct Nudge {
       const Stage outer = std::exchange(section, s);
       for (GraphNodeDesc& node : field) std::visit([&](auto& n) { visit_params(n, *this); }, node.data);
       section = outer;
-    } else if constexpr (requires { field.front(); requires ParamGroup<typename T::value_type>; }) {
+    } else if constexpr (requires {
+                           field.front();
+                           requires ParamGroup<typename T::value_type>;
+                         }) {
       const Stage outer = std::exchange(section, s);
       for (auto& item : field) visit_params(item, *this);
       section = outer;
@@ -85,11 +88,9 @@ struct Nudge {
     if (auto* color = std::get_if<Color>(&c)) return nudge(p, *color);
     return false;
   }
-  bool nudge(const Param& p, std::vector<Color>& list) {
-    return !list.empty() && nudge(p, list.front());
-  }
+  bool nudge(const Param& p, std::vector<Color>& list) { return !list.empty() && nudge(p, list.front()); }
   template <class E>
-    requires std::is_enum_v<E>
+  requires std::is_enum_v<E>
   bool nudge(const Param& p, E& e) {
     int v = int(e);
     const bool changed = nudge(p, v);
@@ -156,8 +157,8 @@ void expect_only_stage_work(Stage stage, const CompileCounters& d, const std::st
   EXPECT_EQ(d.files_read, 0u) << "an edit read a file";
   const bool world = stage >= Stage::material;
   if (!world) {
-    EXPECT_EQ(d.material_tables + d.light_tables + d.top_levels + d.shape_bvhs + d.placements + d.stroke_sets +
-                  d.stroke_paints,
+    EXPECT_EQ(d.material_tables + d.light_tables + d.top_levels + d.shape_bvhs + d.placements +
+                  d.stroke_sets + d.stroke_paints,
               0u)
         << "a view-only edit rebuilt part of the world";
     return;
@@ -222,7 +223,8 @@ TEST_P(StageTable, EveryParameterRunsItsStageOnly) {
   SceneDesc original = *loaded.scene;
   original.render.width = 32;
   original.render.height = 24;
-  for (StrokeEmitterDesc& e : original.strokes) e.count = std::min(e.count, 300);  // the test's time, not its reach
+  for (StrokeEmitterDesc& e : original.strokes)
+    e.count = std::min(e.count, 300);  // the test's time, not its reach
 
   SceneCompiler compiler;
   ASSERT_TRUE(compiler.compile(original).scene);
@@ -243,7 +245,8 @@ TEST_P(StageTable, EveryParameterRunsItsStageOnly) {
       EXPECT_FALSE(incremental.scene) << what;
       continue;
     }
-    ASSERT_TRUE(incremental.scene) << what << ": " << (incremental.errors.empty() ? "" : incremental.errors[0]);
+    ASSERT_TRUE(incremental.scene) << what << ": "
+                                   << (incremental.errors.empty() ? "" : incremental.errors[0]);
     StageSet expected;
     expected.add(nudge.stage);
     EXPECT_EQ(incremental.changes.names(), expected.names()) << what;
@@ -259,10 +262,10 @@ TEST_P(StageTable, EveryParameterRunsItsStageOnly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, StageTable,
-                         ::testing::Values("cornell_outlines.json", "materials.json", "toon.json", "lights.json",
-                                           "strokes_150.json", "npr_mesh.json", "mesh.json", "graph_toon_rim.json",
-                                           "graph_painterly.json", "graph_xtoon_depth.json",
-                                           "graph_outline_gradient.json"),
+                         ::testing::Values("cornell_outlines.json", "materials.json", "toon.json",
+                                           "lights.json", "strokes_150.json", "npr_mesh.json", "mesh.json",
+                                           "graph_toon_rim.json", "graph_painterly.json",
+                                           "graph_xtoon_depth.json", "graph_outline_gradient.json"),
                          [](const auto& scene) { return scene.param.substr(0, scene.param.find('.')); });
 
 }  // namespace

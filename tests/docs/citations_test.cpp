@@ -51,7 +51,8 @@ std::set<std::string> headings_of(const fs::path& file) {
     std::erase_if(name, [](char c) { return c == '`' || c == '"'; });
     name = collapse_spaces(name);
     names.insert(name);
-    if (const size_t colon = name.find(": "); colon != std::string::npos) names.insert(name.substr(colon + 2));
+    if (const size_t colon = name.find(": "); colon != std::string::npos)
+      names.insert(name.substr(colon + 2));
   }
   return names;
 }
@@ -85,7 +86,8 @@ struct Citation {
 // breaks of a comment or a paragraph allowed anywhere between. A section name starts
 // with a letter, a digit or a code mark, so quoted punctuation is no citation.
 std::vector<Citation> citations_in(const fs::path& file) {
-  static const std::regex cite(R"re(((?:docs/[\w-]+|README)\.md)[,:]?\s*\(?((?:"[\w`][^"\n]*(?:\n[^"\n]+)?"(?:,\s*|\s+and\s+|\s+or\s+)?)+))re");
+  static const std::regex cite(
+      R"re(((?:docs/[\w-]+|README)\.md)[,:]?\s*\(?((?:"[\w`][^"\n]*(?:\n[^"\n]+)?"(?:,\s*|\s+and\s+|\s+or\s+)?)+))re");
   static const std::regex quoted(R"re("([^"]+)")re");
   std::vector<Citation> found;
   const std::string prose = prose_of(file);
@@ -116,7 +118,8 @@ TEST(DocCitations, EveryCitedSectionExists) {
   for (const fs::path& file : cited_from())
     for (const Citation& c : citations_in(file)) {
       const fs::path doc = kSource / c.doc;
-      if (!headings.contains(c.doc)) headings[c.doc] = fs::exists(doc) ? headings_of(doc) : std::set<std::string>{};
+      if (!headings.contains(c.doc))
+        headings[c.doc] = fs::exists(doc) ? headings_of(doc) : std::set<std::string>{};
       ++checked;
       EXPECT_TRUE(headings[c.doc].contains(c.section))
           << fs::relative(c.from, kSource).string() << " cites " << c.doc << ", \"" << c.section

@@ -35,12 +35,12 @@ SceneDesc ball_scene() {
 
 TEST(Animation, PathsReachEveryKindOfKeyableParameter) {
   const SceneDesc d = ball_scene();
-  for (const char* path : {"camera/look_from", "camera/vfov", "camera/focus_distance", "objects/ball/transform/translate",
-                           "objects/ball/transform/scale", "objects/ball/transform/rotate/0/degrees",
-                           "objects/ball/visible", "objects/ball/shape/radius", "lights/key/intensity",
-                           "lights/key/color", "materials/toon/threshold", "materials/toon/color",
-                           "outlines/width", "outlines/silhouette/color", "environment/color",
-                           "render/painterly_radius"}) {
+  for (const char* path :
+       {"camera/look_from", "camera/vfov", "camera/focus_distance", "objects/ball/transform/translate",
+        "objects/ball/transform/scale", "objects/ball/transform/rotate/0/degrees", "objects/ball/visible",
+        "objects/ball/shape/radius", "lights/key/intensity", "lights/key/color", "materials/toon/threshold",
+        "materials/toon/color", "outlines/width", "outlines/silhouette/color", "environment/color",
+        "render/painterly_radius"}) {
     std::string error;
     EXPECT_TRUE(animation_target(d, path, &error)) << path << ": " << error;
   }
@@ -66,7 +66,8 @@ TEST(Animation, PathsThatCannotBeKeyedSayWhy) {
 }
 
 TEST(Animation, LinearAndStepKeysInterpolateAsNamed) {
-  TrackDesc t{"camera/vfov", {key(1, {10}, Interpolation::linear), key(5, {30}, Interpolation::step), key(9, {0})}};
+  TrackDesc t{"camera/vfov",
+              {key(1, {10}, Interpolation::linear), key(5, {30}, Interpolation::step), key(9, {0})}};
   EXPECT_DOUBLE_EQ(track_value(t, -3)[0], 10);
   EXPECT_DOUBLE_EQ(track_value(t, 1)[0], 10);
   EXPECT_DOUBLE_EQ(track_value(t, 2)[0], 15);
@@ -103,7 +104,8 @@ TEST(Animation, BezierKeysPassThroughKeysEaseAndNeverOvershoot) {
 
 TEST(Animation, TheDocumentAtAFrameCarriesEveryTrack) {
   SceneDesc d = ball_scene();
-  d.animation.push_back({"objects/ball/transform/translate", {key(1, {0, 0, 0}, Interpolation::linear), key(11, {1, 2, 3})}});
+  d.animation.push_back(
+      {"objects/ball/transform/translate", {key(1, {0, 0, 0}, Interpolation::linear), key(11, {1, 2, 3})}});
   d.animation.push_back({"objects/ball/visible", {key(1, {1}), key(5, {0})}});
   d.animation.push_back({"materials/toon/bands", {key(1, {2}, Interpolation::linear), key(3, {5})}});
   d.animation.push_back({"outlines/unit", {key(1, {0}), key(4, {2})}});
@@ -215,7 +217,8 @@ TEST(AnimationJson, AnUnknownTargetStillOpensForEditingAndKeepsItsKeys) {
                                              "keys": [{"frame": 1, "value": [1, 2, 3]}]}]})";
   const SceneLoadResult loaded = parse_scene(text, ".", "anim.json", ReadFor::editing);
   ASSERT_TRUE(loaded) << joined(loaded.errors);
-  EXPECT_NE(joined(loaded.warnings).find("no entry named \"gone\""), std::string::npos) << joined(loaded.warnings);
+  EXPECT_NE(joined(loaded.warnings).find("no entry named \"gone\""), std::string::npos)
+      << joined(loaded.warnings);
   EXPECT_EQ(loaded.scene->animation[0].keys[0].value, (std::vector<double>{1, 2, 3}));
   EXPECT_NE(scene_to_string(*loaded.scene).find("\"objects/gone/transform/translate\""), std::string::npos);
 }
@@ -230,8 +233,9 @@ TEST(AnimationScale, ManyTracksGiveALineEachAndAllApply) {
     shared.animation.push_back({"objects/ball/transform/translate", {key(1, {0, double(i), 0})}});
   const std::vector<std::string> problems = check_animation(shared);
   ASSERT_EQ(problems.size(), size_t(kTracks - 1));
-  EXPECT_EQ(problems.back(), "animation[4999] (\"objects/ball/transform/translate\"): animation[0] already "
-                             "animates this target");
+  EXPECT_EQ(problems.back(),
+            "animation[4999] (\"objects/ball/transform/translate\"): animation[0] already "
+            "animates this target");
   const std::string text = scene_to_string(shared);
   const SceneLoadResult loaded = parse_scene(text, ".", "many.json");
   ASSERT_FALSE(loaded);
@@ -249,7 +253,8 @@ TEST(AnimationScale, ManyTracksGiveALineEachAndAllApply) {
   }
   EXPECT_TRUE(check_animation(spread).empty()) << joined(check_animation(spread));
   const SceneDesc at = scene_at_frame(spread, 2);
-  for (int i = 0; i < kTracks; ++i) ASSERT_EQ(at.objects[size_t(i) + 1].transform.translate.x, float(i) / 2) << i;
+  for (int i = 0; i < kTracks; ++i)
+    ASSERT_EQ(at.objects[size_t(i) + 1].transform.translate.x, float(i) / 2) << i;
   const SceneLoadResult reopened = parse_scene(scene_to_string(spread), ".", "spread.json");
   ASSERT_TRUE(reopened) << joined(reopened.errors);
   EXPECT_EQ(reopened.scene->animation, spread.animation);

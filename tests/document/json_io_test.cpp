@@ -455,7 +455,8 @@ const std::vector<BrokenCase>& broken_cases() {
       {"unsupported_version.json", {"version: version 2 is newer", "(supported: 1)"}},
       {"version_not_integer.json", {"version: expected an integer", "got \"1\""}},
       {"unknown_key.json",
-       {"objects[1]: unknown key \"materail\" (expected one of: name, material, visible, lines, shape, transform)"}},
+       {"objects[1]: unknown key \"materail\" (expected one of: name, material, visible, lines, shape, "
+        "transform)"}},
       {"unknown_top_level_key.json", {"unknown key \"camrea\" (expected one of: format, version, camera"}},
       {"unknown_texture_key.json",
        {"materials[0].albedo: unknown key \"sclae\" (expected one of: type, even, odd, scale)"}},

@@ -41,23 +41,50 @@ void collect_pointers(const Json& j, const Json::json_pointer& at, std::vector<J
 
 // Values that break assumptions: extremes of every range, wrong types, empties.
 Json hostile_value(std::mt19937& rng) {
-  static const std::vector<Json> values = {
-      0,     -1,    1e-30, 1e30,  3.4e38, -3.4e38, 1e9,   -1e9,  2147483647, -2147483648.0,
-      0.5,   64,    1024,  1e7,   16384,  "",      "x",   true,  nullptr,    Json::array(),
-      Json::object(), Json::array({0, 0, 0}), Json::array({1e30, -1e30, 1e30}), Json::array({1, 2}),
-      Json::object({{"type", "image"}, {"path", ""}}), Json::object({{"type", "checker"}})};
+  static const std::vector<Json> values = {0,
+                                           -1,
+                                           1e-30,
+                                           1e30,
+                                           3.4e38,
+                                           -3.4e38,
+                                           1e9,
+                                           -1e9,
+                                           2147483647,
+                                           -2147483648.0,
+                                           0.5,
+                                           64,
+                                           1024,
+                                           1e7,
+                                           16384,
+                                           "",
+                                           "x",
+                                           true,
+                                           nullptr,
+                                           Json::array(),
+                                           Json::object(),
+                                           Json::array({0, 0, 0}),
+                                           Json::array({1e30, -1e30, 1e30}),
+                                           Json::array({1, 2}),
+                                           Json::object({{"type", "image"}, {"path", ""}}),
+                                           Json::object({{"type", "checker"}})};
   return values[rng() % values.size()];
 }
 
 // A number pushed to where bugs live: zero, tiny, huge, negated, scaled.
 Json nudged_number(double x, std::mt19937& rng) {
   switch (rng() % 6) {
-    case 0: return 0;
-    case 1: return x * 1e-6;
-    case 2: return x * 1e3;
-    case 3: return -x;
-    case 4: return x + 1;
-    default: return 1e-7;
+    case 0:
+      return 0;
+    case 1:
+      return x * 1e-6;
+    case 2:
+      return x * 1e3;
+    case 3:
+      return -x;
+    case 4:
+      return x + 1;
+    default:
+      return 1e-7;
   }
 }
 
@@ -87,8 +114,9 @@ void mutate(Json& doc, std::mt19937& rng) {
 }
 
 bool all_finite(const RgbImage& image) {
-  return std::all_of(image.pixels.begin(), image.pixels.end(),
-                     [](const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); });
+  return std::all_of(image.pixels.begin(), image.pixels.end(), [](const Color& c) {
+    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+  });
 }
 
 TEST(MutatedScenes, NoInputCrashesHangsOrRendersNonFinite) {
@@ -140,8 +168,8 @@ TEST(MutatedScenes, NoInputCrashesHangsOrRendersNonFinite) {
       ++rendered;
     }
   }
-  std::printf("[ info ] %d mutated scenes: %d read, %d compiled, %d rendered\n", per_file * int(files.size()), read,
-              compiled, rendered);
+  std::printf("[ info ] %d mutated scenes: %d read, %d compiled, %d rendered\n", per_file * int(files.size()),
+              read, compiled, rendered);
   // The mutations must leave enough scenes valid to exercise compiling and rendering.
   EXPECT_GT(rendered, 60);
 }

@@ -26,7 +26,7 @@ using testing::joined;
 std::vector<fs::path> shipped_scenes() {
   std::vector<fs::path> files;
   for (const fs::path& dir : {fs::path(INKRAY_SOURCE_DIR) / "scenes",
-                             fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid"}) {
+                              fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid"}) {
     for (const auto& entry : fs::directory_iterator(dir)) {
       if (entry.path().extension() == ".json") files.push_back(entry.path());
     }
@@ -73,7 +73,8 @@ TEST(SceneRoundTrip, EveryShippedSceneSavesReopensAndRendersTheSame) {
 
     // Same document in memory, whatever folder the paths are relative to.
     SceneDesc rebased = *second.scene;
-    EXPECT_TRUE(identical(thumbnail(*first.scene), thumbnail(rebased))) << "the reopened scene renders differently";
+    EXPECT_TRUE(identical(thumbnail(*first.scene), thumbnail(rebased)))
+        << "the reopened scene renders differently";
   }
   fs::remove_all(out_dir);
 }
@@ -81,7 +82,8 @@ TEST(SceneRoundTrip, EveryShippedSceneSavesReopensAndRendersTheSame) {
 // Unset optional paths used to be written as "", which the reader refused: every toon
 // material and stroke emitter without an image made its scene unloadable once saved.
 TEST(SceneRoundTrip, UnsetOptionalPathsAreLeftOutAndEmptyOnesStillOpen) {
-  const fs::path legacy = fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid" / "legacy_empty_paths.json";
+  const fs::path legacy =
+      fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid" / "legacy_empty_paths.json";
   SceneLoadResult loaded = load_scene(legacy);
   ASSERT_TRUE(loaded) << joined(loaded.errors);
   ASSERT_EQ(loaded.scene->materials.size(), 1u);

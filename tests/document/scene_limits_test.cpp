@@ -35,8 +35,10 @@ TEST(SceneLimits, CameraBeyondTheRayEngineRangeIsAnError) {
   const char* text = R"({"format": "inkray-scene", "version": 1, "camera": {"look_from": [1e19, 1, 5]}})";
   SceneLoadResult r = parse_scene(text, {}, "far.json");
   ASSERT_FALSE(r);
-  EXPECT_NE(joined(r.errors).find("far.json: camera.look_from: expected an array of 3 numbers, each in [-1000000000, 1000000000]"),
-            std::string::npos)
+  EXPECT_NE(
+      joined(r.errors).find(
+          "far.json: camera.look_from: expected an array of 3 numbers, each in [-1000000000, 1000000000]"),
+      std::string::npos)
       << joined(r.errors);
   // Every position and offset has the same bound.
   r = parse_scene(R"({"format": "inkray-scene", "version": 1, "materials": [{"name": "m"}],
@@ -53,7 +55,8 @@ TEST(SceneLimits, TransformedGeometryBeyondTheWorldLimitIsACompileError) {
   s.objects[0].transform.scale = Vec3(1e9f);
   const CompileResult c = compile_scene(s);
   EXPECT_FALSE(c.scene);
-  EXPECT_NE(joined(c.errors).find("objects[0] \"ball\": after its transform the shape reaches"), std::string::npos)
+  EXPECT_NE(joined(c.errors).find("objects[0] \"ball\": after its transform the shape reaches"),
+            std::string::npos)
       << joined(c.errors);
 }
 
@@ -107,8 +110,9 @@ TEST(SceneLimits, ImageSizeIsCheckedFromTheHeaderBeforeDecoding) {
   RgbImage image;
   std::string error;
   EXPECT_FALSE(read_image(big, true, &image, &error));
-  EXPECT_NE(error.find("big.png: the image is 18000 x 18000 pixels; inkray reads images of at most 8192 x 8192"),
-            std::string::npos)
+  EXPECT_NE(
+      error.find("big.png: the image is 18000 x 18000 pixels; inkray reads images of at most 8192 x 8192"),
+      std::string::npos)
       << error;
   EXPECT_TRUE(image.pixels.empty());
 
@@ -118,7 +122,8 @@ TEST(SceneLimits, ImageSizeIsCheckedFromTheHeaderBeforeDecoding) {
   s.materials[0].data = DiffuseDesc{ImageTextureDesc{"big.png", Color(1.f), true}};
   const CompileResult c = compile_scene(s);
   EXPECT_FALSE(c.scene);
-  EXPECT_NE(joined(c.errors).find("big.png: the image is 18000 x 18000"), std::string::npos) << joined(c.errors);
+  EXPECT_NE(joined(c.errors).find("big.png: the image is 18000 x 18000"), std::string::npos)
+      << joined(c.errors);
 
   // And as a brush image.
   s = one_sphere();
@@ -145,13 +150,15 @@ TEST(SceneLimits, ImagesHaveABudgetPerScene) {
   for (int i = 0; i < 5; ++i) {
     const std::string name = "t" + std::to_string(i) + ".png";
     testing::write_png_header(dir.path() / name, 8192, 8192, 16384);  // as long as a real 1-bit PNG could be
-    s.materials.push_back({"m" + std::to_string(i), DiffuseDesc{ImageTextureDesc{name, Color(1.f), true}}, {}});
+    s.materials.push_back(
+        {"m" + std::to_string(i), DiffuseDesc{ImageTextureDesc{name, Color(1.f), true}}, {}});
   }
   s.objects[0].material = "m0";
   std::vector<std::string> errors;
   check_memory_budget(s, std::uint64_t(1) << 50, errors);
   ASSERT_EQ(errors.size(), 1u) << joined(errors);
-  EXPECT_NE(errors[0].find("the scene's images have 335544320 texels together"), std::string::npos) << errors[0];
+  EXPECT_NE(errors[0].find("the scene's images have 335544320 texels together"), std::string::npos)
+      << errors[0];
 }
 
 TEST(SceneLimits, MemoryEstimateIsCheckedBeforeBuilding) {

@@ -66,7 +66,9 @@ double rmse_display(const RgbImage& a, const RgbImage& b) {
 TEST(Denoise, NoiseFreeImageComesBackUnchanged) {
   // Both halves agree exactly: the cross-validation sees no noise to remove, so the
   // raw mean wins everywhere, edges, gradients and all.
-  const auto value = [](int x, int y) { return Color(float(x) / 40.f, float((x * y) % 7) / 7.f, y < 10 ? 1.f : 0.1f); };
+  const auto value = [](int x, int y) {
+    return Color(float(x) / 40.f, float((x * y) % 7) / 7.f, y < 10 ? 1.f : 0.1f);
+  };
   const auto hit = [](int x, int) { return hit_at(x < 20 ? 0 : 1); };
   const std::unique_ptr<Film> film = noisy_film(40, 24, 4, 0.f, value, hit);
   const Denoised d = denoise(*film);

@@ -3,7 +3,6 @@
 
 #include <gtest/gtest.h>
 
-
 namespace inkray {
 namespace {
 
@@ -36,8 +35,8 @@ TEST(Film, NoiseEstimateIsZeroForConstantAndPositiveForNoise) {
 TEST(Film, NoiseImageIsPerPixelHalfDifferenceOverMean) {
   Film film(3, 1, {});
   for (uint32_t pass = 0; pass < 4; ++pass) {
-    film.add_sample(0, 0, pass, Color(0.5f));                     // constant: no noise
-    film.add_sample(1, 0, pass, Color(pass % 2 ? 3.f : 1.f));     // halves 1 and 3
+    film.add_sample(0, 0, pass, Color(0.5f));                  // constant: no noise
+    film.add_sample(1, 0, pass, Color(pass % 2 ? 3.f : 1.f));  // halves 1 and 3
   }
   film.add_sample(2, 0, 0, Color(2.f));  // only the even half has samples
   const RgbImage noise = film.resolve_noise();

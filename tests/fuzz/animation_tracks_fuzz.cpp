@@ -30,7 +30,8 @@
 namespace inkray {
 namespace {
 
-const std::filesystem::path kBase = std::filesystem::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid";
+const std::filesystem::path kBase =
+    std::filesystem::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid";
 
 // The scene the tracks animate: a floor, one of each shape, a light, outlines and strokes
 // (a flat brush: a bristle brush's bake would take most of each run).
@@ -69,27 +70,36 @@ const char* const kTargets[] = {
     "outlines/unit", "outlines/silhouette/color", "strokes/dabs/jitter", "strokes/dabs/hue_jitter",
     "render/painterly_radius", "environment/color",
     // refused: unknown entries and parameters, unkeyable ones, groups
-    "objects/gone/transform/scale", "objects/box/transform/rotate/0/degrees", "render/width", "strokes/dabs/count",
-    "outlines/silhouette", "sky/color", ""};
+    "objects/gone/transform/scale", "objects/box/transform/rotate/0/degrees", "render/width",
+    "strokes/dabs/count", "outlines/silhouette", "sky/color", ""};
 
 double key_number(graph_ops::ByteStream& in) {
   switch (in.byte() % 8) {
-    case 0: return 0.0;  // a scale of zero: the singular case
-    case 1: return -1.0;  // a mirror, and a scale through zero on the way
-    case 2: return 1e-7;
-    default: return double(in.number());
+    case 0:
+      return 0.0;  // a scale of zero: the singular case
+    case 1:
+      return -1.0;  // a mirror, and a scale through zero on the way
+    case 2:
+      return 1e-7;
+    default:
+      return double(in.number());
   }
 }
 
 double key_frame(graph_ops::ByteStream& in, double previous) {
   switch (in.byte() % 6) {
-    case 0: return double(in.number());
-    case 1: return previous;  // a repeated frame: refused
-    default: return previous + 0.25 * (1 + in.byte() % 16);
+    case 0:
+      return double(in.number());
+    case 1:
+      return previous;  // a repeated frame: refused
+    default:
+      return previous + 0.25 * (1 + in.byte() % 16);
   }
 }
 
-nlohmann::json number_json(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+nlohmann::json number_json(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+}
 
 // What the reader and the writer do to a key's value: the parameter's range, and a
 // float field's precision.
@@ -128,8 +138,10 @@ void check_values(const SceneDesc& scene) {
         const KeyDesc& before = next == track.keys.begin() ? track.keys.front() : *(next - 1);
         const double a = stored(*p, before.value[c]), b = stored(*p, after.value[c]);
         if (frame == before.frame && !near(value[c], a))
-          fuzz_fail(at(track, frame) + ": " + std::to_string(value[c]) + " is not its key's " + std::to_string(a));
-        const double slack = p->kind == ParamKind::integer ? 0.5 : 1e-5 * std::max({1.0, std::abs(a), std::abs(b)});
+          fuzz_fail(at(track, frame) + ": " + std::to_string(value[c]) + " is not its key's " +
+                    std::to_string(a));
+        const double slack =
+            p->kind == ParamKind::integer ? 0.5 : 1e-5 * std::max({1.0, std::abs(a), std::abs(b)});
         if (value[c] < std::min(a, b) - slack || value[c] > std::max(a, b) + slack)
           fuzz_fail(at(track, frame) + ": " + std::to_string(value[c]) + " leaves its keys' range [" +
                     std::to_string(std::min(a, b)) + ", " + std::to_string(std::max(a, b)) + "]");
@@ -149,10 +161,16 @@ int fuzz_animation_tracks(const std::uint8_t* data, std::size_t size) {
   const size_t f = in.pick(std::size(kFrames) + 1);
   doc["render"]["frame"] = f < std::size(kFrames) ? kFrames[f] : double(in.number());
   switch (in.byte() % 4) {
-    case 0: break;  // no motion blur
-    case 1: doc["render"]["shutter_open"] = -0.25, doc["render"]["shutter_close"] = 0.25; break;
-    case 2: doc["render"]["shutter_open"] = -1.0, doc["render"]["shutter_close"] = 1.0; break;
-    default: doc["render"]["shutter_open"] = 0.0, doc["render"]["shutter_close"] = double(in.byte()) / 64.0;
+    case 0:
+      break;  // no motion blur
+    case 1:
+      doc["render"]["shutter_open"] = -0.25, doc["render"]["shutter_close"] = 0.25;
+      break;
+    case 2:
+      doc["render"]["shutter_open"] = -1.0, doc["render"]["shutter_close"] = 1.0;
+      break;
+    default:
+      doc["render"]["shutter_open"] = 0.0, doc["render"]["shutter_close"] = double(in.byte()) / 64.0;
   }
   nlohmann::json tracks = nlohmann::json::array();
   const int track_count = 1 + in.byte() % 6;

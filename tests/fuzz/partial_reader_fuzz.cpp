@@ -31,10 +31,13 @@ const std::vector<partial_oracle::Seed>& seeds() {
     AovSet depth;
     depth.add(Aov::depth);
     std::vector<partial_oracle::Seed> v;
-    v.push_back(partial_oracle::make_seed(*testing::odd_film(6, 5, every, true), info_of(6, 5, {1, 1, 6, 4})));
+    v.push_back(
+        partial_oracle::make_seed(*testing::odd_film(6, 5, every, true), info_of(6, 5, {1, 1, 6, 4})));
     // 256 pixels or more are RLE compressed.
-    v.push_back(partial_oracle::make_seed(*testing::odd_film(18, 16, {}, false), info_of(18, 16, {2, 0, 18, 16})));
-    v.push_back(partial_oracle::make_seed(*testing::odd_film(4, 3, depth, true), info_of(4, 3, {0, 0, 4, 3})));
+    v.push_back(
+        partial_oracle::make_seed(*testing::odd_film(18, 16, {}, false), info_of(18, 16, {2, 0, 18, 16})));
+    v.push_back(
+        partial_oracle::make_seed(*testing::odd_film(4, 3, depth, true), info_of(4, 3, {0, 0, 4, 3})));
     return v;
   }();
   return s;

@@ -60,7 +60,8 @@ TEST(GeometryReintersection, RandomSpheres) {
     scene.add(Sphere{center, radius, Transform{}});
     scene.commit();
     const Point3 target = center + random_dir(rng) * radius * 0.99f;
-    check_spawned_rays(scene, ray_towards(rng, target, radius * log_uniform(rng, 1.1f, 100.f)), true, &st, rng);
+    check_spawned_rays(scene, ray_towards(rng, target, radius * log_uniform(rng, 1.1f, 100.f)), true, &st,
+                       rng);
   }
   EXPECT_GT(st.hits, 1900);
   EXPECT_EQ(st.rehits, 0);
@@ -72,9 +73,10 @@ TEST(GeometryReintersection, RandomTransformedSpheres) {
   ReintersectionStats st;
   for (int i = 0; i < 1000; ++i) {
     const float s = log_uniform(rng, 1e-3f, 1e3f);
-    const Transform t = Transform::translate(random_dir(rng) * std::min(log_uniform(rng, 1e-3f, 1e4f), 1e4f * s)) *
-                        Transform::rotate(360.f * rng.next_float(), random_dir(rng)) *
-                        Transform::scale(Vec3(s, s * (0.5f + rng.next_float()), s * (0.5f + rng.next_float())));
+    const Transform t =
+        Transform::translate(random_dir(rng) * std::min(log_uniform(rng, 1e-3f, 1e4f), 1e4f * s)) *
+        Transform::rotate(360.f * rng.next_float(), random_dir(rng)) *
+        Transform::scale(Vec3(s, s * (0.5f + rng.next_float()), s * (0.5f + rng.next_float())));
     EmbreeScene scene;
     scene.add(Sphere{Point3(0.f), 1.f, t});
     scene.commit();
@@ -102,7 +104,8 @@ TEST(GeometryReintersection, RandomTrianglesAndQuads) {
     scene.commit();
     const float b0 = rng.next_float() * 0.5f, b1 = rng.next_float() * 0.5f;
     const Point3 target = base + b0 * e0 + b1 * e1;
-    check_spawned_rays(scene, ray_towards(rng, target, size * log_uniform(rng, 0.1f, 100.f)), false, &st, rng);
+    check_spawned_rays(scene, ray_towards(rng, target, size * log_uniform(rng, 0.1f, 100.f)), false, &st,
+                       rng);
   }
   EXPECT_GT(st.hits, 3500);
   EXPECT_EQ(st.rehits, 0);
@@ -135,7 +138,8 @@ TEST(GeometryReintersection, FarTessellatedSphereKeepsRaysInside) {
       si = scene.interaction(ray, hit);
     }
     Hit out_hit;
-    if (scene.intersect(spawn_ray(si.p, si.p_error, si.ng, random_in_hemisphere(rng, si.ng)), kInfinity, &out_hit))
+    if (scene.intersect(spawn_ray(si.p, si.p_error, si.ng, random_in_hemisphere(rng, si.ng)), kInfinity,
+                        &out_hit))
       ++rehits;
   }
   EXPECT_EQ(misses, 0);
@@ -153,8 +157,8 @@ TEST(GeometryReintersection, ClosedMeshHasNoCracksAtEdges) {
     targets.insert(targets.end(), {a, b, c, 0.5f * (a + b), 0.5f * (b + c), 0.5f * (c + a)});
   }
   EmbreeScene scene;
-  scene.add(make_mesh({mesh.positions.begin(), mesh.positions.end() - 1}, mesh.normals, mesh.uvs, mesh.indices,
-                      Transform{}));
+  scene.add(make_mesh({mesh.positions.begin(), mesh.positions.end() - 1}, mesh.normals, mesh.uvs,
+                      mesh.indices, Transform{}));
   scene.commit();
   int escapes = 0;
   for (const Point3& target : targets) {
@@ -179,7 +183,8 @@ TEST(GeometryReintersection, GrazingRaysOnLargeSphere) {
     // from just below it (extremely grazing) to 5.5 degrees down.
     const float elevation = glm::radians(-2.5626f - 3.f * float(i) / 20000.f);
     const float azimuth = 0.7f * float(i);
-    const Vec3 d(std::cos(elevation) * std::cos(azimuth), std::sin(elevation), std::cos(elevation) * std::sin(azimuth));
+    const Vec3 d(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
+                 std::cos(elevation) * std::sin(azimuth));
     Hit hit;
     if (!scene.intersect({eye, d}, kInfinity, &hit)) continue;
     ++hits;
@@ -218,12 +223,14 @@ TEST(GeometryReintersection, InstancedClosedMeshesUnderRandomTransforms) {
     const float scale = log_uniform(rng, 1e-3f, 1e4f);
     const Vec3 stretch(scale * (0.5f + rng.next_float()), scale * (0.5f + rng.next_float()), scale);
     const Transform to_world = Transform::translate(random_dir(rng) * log_uniform(rng, 1e-3f, 1e2f) * scale) *
-                               Transform::rotate(360.f * rng.next_float(), random_dir(rng)) * Transform::scale(stretch);
+                               Transform::rotate(360.f * rng.next_float(), random_dir(rng)) *
+                               Transform::scale(stretch);
     EmbreeScene scene;
     scene.add(bvh, to_world, std::make_shared<const Shape>(transformed(object, to_world)));
     scene.commit();
     const Point3 center = to_world.point(Point3(0.f));
-    for (int r = 0; r < 20; ++r) check_spawned_rays(scene, ray_towards(rng, center, 10.f * scale * 3.f), true, &st, rng);
+    for (int r = 0; r < 20; ++r)
+      check_spawned_rays(scene, ray_towards(rng, center, 10.f * scale * 3.f), true, &st, rng);
   }
   EXPECT_GT(st.hits, 3000);
   EXPECT_EQ(st.rehits, 0);

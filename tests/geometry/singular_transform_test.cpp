@@ -81,10 +81,14 @@ TEST(SingularTransform, MotionPiecesLeaveOutTheInstantScaleCrossesZero) {
 
 ShapeVariant shape_of(int kind) {
   switch (kind) {
-    case 0: return SphereDesc{Point3(0.f), 0.5f};
-    case 1: return QuadDesc{Point3(-0.5f, -0.5f, 0.f), Vec3(1.f, 0.f, 0.f), Vec3(0.f, 1.f, 0.f)};
-    case 2: return BoxDesc{Point3(-0.5f), Point3(0.5f)};
-    default: return MeshDesc{"icosahedron.obj", 30.f};
+    case 0:
+      return SphereDesc{Point3(0.f), 0.5f};
+    case 1:
+      return QuadDesc{Point3(-0.5f, -0.5f, 0.f), Vec3(1.f, 0.f, 0.f), Vec3(0.f, 1.f, 0.f)};
+    case 2:
+      return BoxDesc{Point3(-0.5f), Point3(0.5f)};
+    default:
+      return MeshDesc{"icosahedron.obj", 30.f};
   }
 }
 
@@ -106,8 +110,8 @@ SceneDesc row_scene(int animated, int axis, std::array<float, 3> keys, bool blur
   d.outlines.enabled = true;
   d.materials = {{"toon", ToonDesc{}, {}}, {"glass", DielectricDesc{}, {}}};
   d.lights = {{"sun", DirectionalLightDesc{}}};
-  d.objects = {make_object("ground", QuadDesc{Point3(-5.f, 0.f, 5.f), Vec3(10.f, 0.f, 0.f), Vec3(0.f, 0.f, -10.f)},
-                           "toon")};
+  d.objects = {make_object(
+      "ground", QuadDesc{Point3(-5.f, 0.f, 5.f), Vec3(10.f, 0.f, 0.f), Vec3(0.f, 0.f, -10.f)}, "toon")};
   for (int kind = 0; kind < 4; ++kind) {
     ObjectDesc o = make_object("shape" + std::to_string(kind), shape_of(kind), kind == 1 ? "glass" : "toon");
     o.transform.translate = Vec3(-2.25f + 1.5f * kind, 0.8f, 0.f);
@@ -134,7 +138,8 @@ void expect_finite(const RgbImage& img, const std::string& what) {
 // Through zero (1, 0, 1) and through a mirror (1, -1, 1), on each axis, still and
 // blurred, at frames on and around the key where the scale is zero.
 TEST(SingularTransform, ScaleThroughZeroRendersFiniteOnEveryShape) {
-  for (const std::array<float, 3> keys : {std::array<float, 3>{1.f, 0.f, 1.f}, std::array<float, 3>{1.f, -1.f, 1.f}})
+  for (const std::array<float, 3> keys :
+       {std::array<float, 3>{1.f, 0.f, 1.f}, std::array<float, 3>{1.f, -1.f, 1.f}})
     for (int axis = 0; axis < 3; ++axis)
       for (const bool blur : {false, true}) {
         const SceneDesc base = row_scene(-1, axis, keys, blur);

@@ -22,9 +22,9 @@ const fs::path kHostile = fs::path(INKRAY_SOURCE_DIR) / "tests" / "fuzz" / "cras
 
 // Each of these hangs stb_image, overflows its heap or its integers, or is UB in it.
 TEST(ImageGuard, FilesThatBreakTheDecoderAreRefusedWithTheirName) {
-  for (const char* name : {"stb_hdr_rle_zero_run_hang.hdr", "stb_jpeg_dht_overflow.jpg",
-                           "stb_jpeg_undefined_huffman_table.jpg", "stb_pgm16_heap_overread.pgm",
-                           "stb_pnm_header_int_overflow.ppm"}) {
+  for (const char* name :
+       {"stb_hdr_rle_zero_run_hang.hdr", "stb_jpeg_dht_overflow.jpg", "stb_jpeg_undefined_huffman_table.jpg",
+        "stb_pgm16_heap_overread.pgm", "stb_pnm_header_int_overflow.ppm"}) {
     SCOPED_TRACE(name);
     RgbImage image;
     std::string error;
@@ -43,7 +43,8 @@ TEST(ImageGuard, FilesThatBreakTheDecoderAreRefusedWithTheirName) {
   // A scan using a Huffman table never defined: stb decodes with uninitialised memory,
   // and its assertions abort or not depending on what the heap held before.
   EXPECT_FALSE(image_safe_to_decode(kHostile / "stb_jpeg_undefined_huffman_table.jpg", &error));
-  EXPECT_NE(error.find("a JPEG scan uses a Huffman table the file does not define"), std::string::npos) << error;
+  EXPECT_NE(error.find("a JPEG scan uses a Huffman table the file does not define"), std::string::npos)
+      << error;
   EXPECT_FALSE(image_safe_to_decode(kHostile / "stb_pnm_header_int_overflow.ppm", &error));
   EXPECT_NE(error.find("not a PNG, JPEG, HDR, BMP or TGA image"), std::string::npos) << error;
   // A PNG whose IDAT is empty: stb copies from a null pointer (harmless in practice);
@@ -62,7 +63,8 @@ TEST(ImageGuard, AHeaderClaimingFarMorePixelsThanItsFileCanHoldIsRefused) {
   RgbImage image;
   std::string error;
   EXPECT_FALSE(read_image(file, true, &image, &error));
-  EXPECT_NE(error.find("claims 2568 x 20550 pixels but the file has only 718 bytes"), std::string::npos) << error;
+  EXPECT_NE(error.find("claims 2568 x 20550 pixels but the file has only 718 bytes"), std::string::npos)
+      << error;
   // A 1-bit PNG at deflate's best is the densest legitimate file; it stays readable.
   testing::ScratchFolder dir;
   const int side = 1024;
@@ -99,14 +101,15 @@ TEST(ImageGuard, EveryDocumentedFormatStillLoads) {
     SCOPED_TRACE(name);
     RgbImage image;
     std::string error;
-    ASSERT_TRUE(read_image(fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "images" / name, true, &image, &error))
+    ASSERT_TRUE(
+        read_image(fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "images" / name, true, &image, &error))
         << error;
     EXPECT_EQ(image.width, 24);
     EXPECT_EQ(image.height, 16);
   }
   // And the textures and brushes the project ships.
   for (const fs::path& folder : {fs::path(INKRAY_SOURCE_DIR) / "scenes" / "textures",
-                                fs::path(INKRAY_SOURCE_DIR) / "resources" / "brushes"}) {
+                                 fs::path(INKRAY_SOURCE_DIR) / "resources" / "brushes"}) {
     for (const auto& entry : fs::directory_iterator(folder)) {
       std::string error;
       EXPECT_TRUE(image_safe_to_decode(entry.path(), &error)) << error;

@@ -54,6 +54,5 @@ TEST(ImageIo, PngReadsBackAsLinear) {
   std::filesystem::remove(file);
 }
 
-
 }  // namespace
 }  // namespace inkray

@@ -31,9 +31,10 @@ TEST(IntegratorAnalytic, DiffuseFurnace) {
 }
 
 TEST(IntegratorAnalytic, WhiteFurnaceOfLosslessMaterials) {
-  for (MaterialVariant m : {MaterialVariant(DiffuseDesc{Color(1.f)}), MaterialVariant(ConductorDesc{Color(1.f), 0.f}),
-                            MaterialVariant(DielectricDesc{1.5f, 0.f, Color(1.f)}),
-                            MaterialVariant(TransparentDesc{Color(1.f)})}) {
+  for (MaterialVariant m :
+       {MaterialVariant(DiffuseDesc{Color(1.f)}), MaterialVariant(ConductorDesc{Color(1.f), 0.f}),
+        MaterialVariant(DielectricDesc{1.5f, 0.f, Color(1.f)}),
+        MaterialVariant(TransparentDesc{Color(1.f)})}) {
     const RgbImage img = render_scene(sphere_in_environment(m, Color(0.5f)), 256);
     const Color centre = mean_color(img, 8, 8, 24, 24);
     EXPECT_NEAR(centre.g, 0.5f, 0.5f * 0.005f) << "material " << m.index();
@@ -66,11 +67,12 @@ TEST(IntegratorAnalytic, FloorUnderSphereLight) {
   d.camera.look_from = {0.f, 0.2f, 0.f};
   d.camera.look_at = {0.f, -1.f, 0.f};
   d.camera.up = {0.f, 0.f, 1.f};
-  d.camera.vfov = 1.f;  // a tiny patch of floor around the point below the light
+  d.camera.vfov = 1.f;     // a tiny patch of floor around the point below the light
   d.render.max_depth = 1;  // direct light only: the floor's light does not come back
   d.materials.push_back({"floor", DiffuseDesc{Color(rho)}, {}});
   d.materials.push_back({"lamp", EmissiveDesc{Color(1.f), le, false}, {}});
-  d.objects.push_back({"floor", QuadDesc{{-50.f, 0.f, -50.f}, {0.f, 0.f, 100.f}, {100.f, 0.f, 0.f}}, {}, "floor", true, {}});
+  d.objects.push_back(
+      {"floor", QuadDesc{{-50.f, 0.f, -50.f}, {0.f, 0.f, 100.f}, {100.f, 0.f, 0.f}}, {}, "floor", true, {}});
   d.objects.push_back({"lamp", SphereDesc{{0.f, height, 0.f}, r}, {}, "lamp", true, {}});
   // The camera sits between floor and lamp; hide it from the light with nothing: it is not geometry.
   const RgbImage img = render_scene(d, 256);

@@ -42,7 +42,8 @@ TEST_P(GraphEqualsPlain, SamePixelsSameRays) {
   int converted = 0;
   SceneDesc graph = as_graphs(plain, &converted);
   for (size_t i = 0; i < plain.materials.size(); ++i)
-    if (std::holds_alternative<EmissiveDesc>(plain.materials[i].data)) graph.materials[i] = plain.materials[i];
+    if (std::holds_alternative<EmissiveDesc>(plain.materials[i].data))
+      graph.materials[i] = plain.materials[i];
   ASSERT_GT(converted, 0);
   RenderStats plain_stats, graph_stats;
   const RgbImage a = render_scene(plain, 4, 2, &plain_stats);
@@ -56,7 +57,8 @@ TEST_P(GraphEqualsPlain, SamePixelsSameRays) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, GraphEqualsPlain,
-                         ::testing::Values("materials.json", "toon.json", "cornell.json", "glass_outlines.json"),
+                         ::testing::Values("materials.json", "toon.json", "cornell.json",
+                                           "glass_outlines.json"),
                          [](const auto& scene) { return scene.param.substr(0, scene.param.find('.')); });
 
 // A unit sphere seen from +z, lit along -z by a directional light; its colour is a light input.

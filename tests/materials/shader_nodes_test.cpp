@@ -207,7 +207,7 @@ TEST(ShaderNodes, FresnelAndLayerWeight) {
   GraphDesc lw;
   add(lw, "w", LayerWeightNode{0.5f});
   EXPECT_NEAR(socket_value(lw, "w", "fresnel", sp).x, 1.f / 9.f, 1e-5);  // ior 1 / (1 - blend) = 2
-  EXPECT_NEAR(socket_value(lw, "w", "facing", sp).x, 0.f, 1e-5);          // 1 - |cos|, cos = 1
+  EXPECT_NEAR(socket_value(lw, "w", "facing", sp).x, 0.f, 1e-5);         // 1 - |cos|, cos = 1
   sp.wo = glm::normalize(Vec3(0, 0.6f, 0.8f));
   EXPECT_NEAR(socket_value(lw, "w", "facing", sp).x, 0.2f, 1e-5);
   EXPECT_GT(socket_value(g, "f", "fac", sp).x, 0.04f) << "more reflection away from the normal";
@@ -225,7 +225,8 @@ TEST(ShaderNodes, ProceduralTextures) {
   NoiseNode noise;
   noise.octaves = 3;
   noise.distortion = 0.3f;
-  const NoiseResult n = noise_texture(sp.p_object, NoiseKind::gradient, noise.scale, 3, noise.roughness, 0.3f);
+  const NoiseResult n =
+      noise_texture(sp.p_object, NoiseKind::gradient, noise.scale, 3, noise.roughness, 0.3f);
   EXPECT_NEAR(value_of(noise, "fac").x, n.fac, kTol) << "unlinked, noise reads the object-space position";
   EXPECT_TRUE(near3(value_of(noise, "color"), n.color));
 
@@ -240,7 +241,8 @@ TEST(ShaderNodes, ProceduralTextures) {
   add(g, "at", CombineNode{0.5f, 0.5f, 0.5f});
   add(g, "noise", noise);
   link(g, "at", "vector", "noise", "vector");
-  const NoiseResult moved = noise_texture(Vec3(0.5f), NoiseKind::gradient, noise.scale, 3, noise.roughness, 0.3f);
+  const NoiseResult moved =
+      noise_texture(Vec3(0.5f), NoiseKind::gradient, noise.scale, 3, noise.roughness, 0.3f);
   EXPECT_NEAR(socket_value(g, "noise", "fac", sp).x, moved.fac, kTol);
 }
 

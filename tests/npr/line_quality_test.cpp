@@ -21,7 +21,9 @@ using testing::small_scene;
 using Rendered = testing::RenderedFilm;
 using testing::make_object;
 
-Rendered render(const SceneDesc& desc, int spp, AovSet aovs = {}) { return testing::render_film(desc, spp, aovs); }
+Rendered render(const SceneDesc& desc, int spp, AovSet aovs = {}) {
+  return testing::render_film(desc, spp, aovs);
+}
 
 AovSet with_object_ids() {
   AovSet a;
@@ -66,7 +68,8 @@ SceneDesc glass_scene(float smooth_angle) {
   d.materials.push_back({"ground", DiffuseDesc{Color(0.8f)}, {}});
   d.materials.push_back({"glass", DielectricDesc{}, {}});
   d.materials.push_back({"orange", DiffuseDesc{Color(0.9f, 0.45f, 0.1f)}, {}});
-  d.objects.push_back(make_object("ground", QuadDesc{{-60.f, 0.f, -60.f}, {0.f, 0.f, 120.f}, {120.f, 0.f, 0.f}}, "ground"));
+  d.objects.push_back(
+      make_object("ground", QuadDesc{{-60.f, 0.f, -60.f}, {0.f, 0.f, 120.f}, {120.f, 0.f, 0.f}}, "ground"));
   ObjectDesc blob = make_object("blob", MeshDesc{"meshes/bumpy_blob.obj", smooth_angle}, "glass");
   blob.transform.scale = Vec3(0.8f);
   blob.transform.translate = {-1.3f, 0.95f, 0.f};
@@ -94,8 +97,8 @@ TEST(LineQuality, BumpyRefractorDrawsNoMessWhileASmoothBallKeepsItsLines) {
       int blob_pixels = 0, ball_pixels = 0;
       const double blob = mean_inside(r, 1, &blob_pixels);
       const double ball = mean_inside(r, 2, &ball_pixels);
-      SCOPED_TRACE(::testing::Message() << "smooth_angle " << smooth_angle << ", quality " << quality << ": blob "
-                                      << blob << ", ball " << ball);
+      SCOPED_TRACE(::testing::Message() << "smooth_angle " << smooth_angle << ", quality " << quality
+                                        << ": blob " << blob << ", ball " << ball);
       ASSERT_GT(blob_pixels, 800);
       ASSERT_GT(ball_pixels, 800);
       EXPECT_LT(blob, 0.08);
@@ -112,8 +115,10 @@ SceneDesc quad_in_front_of_quad(int width, int height, float width_px) {
   d.camera.look_from = {0.f, 0.f, 10.f};
   d.camera.vfov = 30.f;
   d.materials.push_back({"grey", DiffuseDesc{Color(0.5f)}, {}});
-  d.objects.push_back(make_object("back", QuadDesc{{-20.f, -20.f, 0.f}, {40.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, "grey"));
-  d.objects.push_back(make_object("front", QuadDesc{{-1.f, -20.f, 2.f}, {2.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, "grey"));
+  d.objects.push_back(
+      make_object("back", QuadDesc{{-20.f, -20.f, 0.f}, {40.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, "grey"));
+  d.objects.push_back(
+      make_object("front", QuadDesc{{-1.f, -20.f, 2.f}, {2.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, "grey"));
   d.outlines.enabled = true;
   d.outlines.object.enabled = false;
   d.outlines.silhouette.enabled = true;
@@ -182,7 +187,8 @@ TEST(LineQuality, DepthLinesDoNotFloodARecedingPlane) {
   d.camera.look_from = {0.f, 1.f, 8.f};
   d.camera.look_at = {0.f, 0.5f, 0.f};
   d.materials.push_back({"grey", DiffuseDesc{Color(0.5f)}, {}});
-  d.objects.push_back(make_object("ground", QuadDesc{{-500.f, 0.f, -500.f}, {0.f, 0.f, 1000.f}, {1000.f, 0.f, 0.f}}, "grey"));
+  d.objects.push_back(
+      make_object("ground", QuadDesc{{-500.f, 0.f, -500.f}, {0.f, 0.f, 1000.f}, {1000.f, 0.f, 0.f}}, "grey"));
   d.outlines.enabled = true;
   d.outlines.silhouette.enabled = false;
   d.outlines.object.enabled = false;
@@ -220,7 +226,8 @@ SceneDesc crease_scene(const char* base_dir, const char* mesh, Point3 eye, float
 // On that scan, feature edges at 30 degrees draw far fewer line pixels.
 TEST(LineQuality, MeshCreasesFollowFeatureEdges) {
   auto scene = [](float threshold) {
-    return crease_scene(INKRAY_SOURCE_DIR "/tests/data", "meshes/bevel_cube.obj", {2.5f, 2.f, 3.f}, threshold);
+    return crease_scene(INKRAY_SOURCE_DIR "/tests/data", "meshes/bevel_cube.obj", {2.5f, 2.f, 3.f},
+                        threshold);
   };
   const Rendered at30 = render(scene(30.f), 16);
   const Rendered at60 = render(scene(60.f), 16);
@@ -234,7 +241,8 @@ TEST(LineQuality, MeshCreasesFollowFeatureEdges) {
 }
 
 TEST(LineQuality, NoisyScanDrawsNoCreaseSpeckle) {
-  const SceneDesc d = crease_scene(INKRAY_SOURCE_DIR "/scenes", "meshes/scan_noisy.obj", {0.f, 0.5f, 4.f}, 30.f);
+  const SceneDesc d =
+      crease_scene(INKRAY_SOURCE_DIR "/scenes", "meshes/scan_noisy.obj", {0.f, 0.5f, 4.f}, 30.f);
   const double meshed = total(render(d, 16).aov(Aov::outline_crease));
   // The 99th percentile of the scan's dihedral angles is 26 degrees: the few
   // edges over 30 are isolated and bound no patch, so nothing is drawn.

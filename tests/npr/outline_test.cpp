@@ -26,8 +26,10 @@ SceneDesc quad_in_front_of_quad(int width, int height) {
   d.camera.look_from = {0.f, 0.f, 10.f};
   d.camera.vfov = 30.f;
   d.materials.push_back({"grey", DiffuseDesc{Color(0.5f)}, {}});
-  d.objects.push_back({"back", QuadDesc{{-20.f, -20.f, 0.f}, {40.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, {}, "grey", true, {}});
-  d.objects.push_back({"front", QuadDesc{{-1.f, -20.f, 2.f}, {2.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, {}, "grey", true, {}});
+  d.objects.push_back(
+      {"back", QuadDesc{{-20.f, -20.f, 0.f}, {40.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, {}, "grey", true, {}});
+  d.objects.push_back(
+      {"front", QuadDesc{{-1.f, -20.f, 2.f}, {2.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, {}, "grey", true, {}});
   d.outlines.enabled = true;
   d.outlines.object.enabled = false;
   d.outlines.silhouette.enabled = true;
@@ -105,8 +107,8 @@ TEST(Outlines, TwiceTheResolutionKeepsTheLook) {
   double diff = 0.0;
   for (int y = 0; y < low.height; ++y)
     for (int x = 0; x < low.width; ++x) {
-      const float h = 0.25f * (high.at(2 * x, 2 * y).x + high.at(2 * x + 1, 2 * y).x + high.at(2 * x, 2 * y + 1).x +
-                               high.at(2 * x + 1, 2 * y + 1).x);
+      const float h = 0.25f * (high.at(2 * x, 2 * y).x + high.at(2 * x + 1, 2 * y).x +
+                               high.at(2 * x, 2 * y + 1).x + high.at(2 * x + 1, 2 * y + 1).x);
       diff += std::abs(h - low.at(x, y).x);
     }
   // Mean absolute difference of the opacity over the image, after a 2x box downsample.
@@ -123,8 +125,10 @@ SceneDesc flush_light(bool object_lines) {
   d.camera.vfov = 60.f;
   d.materials.push_back({"white", DiffuseDesc{Color(0.7f)}, {}});
   d.materials.push_back({"light", EmissiveDesc{Color(1.f), 5.f, true}, {}});
-  d.objects.push_back({"ceiling", QuadDesc{{-10.f, 0.f, -10.f}, {20.f, 0.f, 0.f}, {0.f, 0.f, 20.f}}, {}, "white", true, {}});
-  d.objects.push_back({"lamp", QuadDesc{{-1.f, -0.001f, -1.f}, {2.f, 0.f, 0.f}, {0.f, 0.f, 2.f}}, {}, "light", true, {}});
+  d.objects.push_back(
+      {"ceiling", QuadDesc{{-10.f, 0.f, -10.f}, {20.f, 0.f, 0.f}, {0.f, 0.f, 20.f}}, {}, "white", true, {}});
+  d.objects.push_back(
+      {"lamp", QuadDesc{{-1.f, -0.001f, -1.f}, {2.f, 0.f, 0.f}, {0.f, 0.f, 2.f}}, {}, "light", true, {}});
   d.outlines.enabled = true;
   d.outlines.reference_height = 96.f;
   d.outlines.width = 3.f;
@@ -160,7 +164,8 @@ SceneDesc mirror_scene(bool stop_lines) {
   d.materials.push_back({"mirror", ConductorDesc{Color(0.9f), 0.f}, {}});
   d.materials.back().lines.stop_lines = stop_lines;
   d.materials.push_back({"white", DiffuseDesc{Color(0.7f)}, {}});
-  d.objects.push_back({"mirror", QuadDesc{{-10.f, -10.f, 0.f}, {20.f, 0.f, 0.f}, {0.f, 20.f, 0.f}}, {}, "mirror", true, {}});
+  d.objects.push_back(
+      {"mirror", QuadDesc{{-10.f, -10.f, 0.f}, {20.f, 0.f, 0.f}, {0.f, 20.f, 0.f}}, {}, "mirror", true, {}});
   d.objects.push_back({"ball", SphereDesc{{0.f, 0.f, 8.f}, 1.f}, {}, "white", true, {}});
   d.outlines.enabled = true;
   d.outlines.reference_height = 64.f;

@@ -28,9 +28,11 @@ struct NamedFilter {
 };
 // Never cancelled here (compile_cancel_test covers that).
 const NamedFilter kFilters[] = {
-    {"kuwahara", [](const RgbImage& i, const PainterlyFilterParams& p, ThreadBudget* t) { return kuwahara_filter(i, p, t); }},
-    {"anisotropic",
-     [](const RgbImage& i, const PainterlyFilterParams& p, ThreadBudget* t) { return anisotropic_kuwahara_filter(i, p, t); }}};
+    {"kuwahara", [](const RgbImage& i, const PainterlyFilterParams& p,
+                    ThreadBudget* t) { return kuwahara_filter(i, p, t); }},
+    {"anisotropic", [](const RgbImage& i, const PainterlyFilterParams& p, ThreadBudget* t) {
+       return anisotropic_kuwahara_filter(i, p, t);
+     }}};
 
 RgbImage make_image(int width, int height, const std::function<Color(int, int)>& pixel) {
   RgbImage image{width, height, std::vector<Color>(size_t(width) * size_t(height))};

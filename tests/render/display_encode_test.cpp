@@ -80,7 +80,8 @@ TEST(PaintHighlight, InnerBorderOfTheObjectInItsColour) {
         const int border = std::min({x - 2, 7 - x, y - 2, 7 - y});  // distance to the object's edge
         const bool painted = inside && border < thickness;
         // The rim: outside, sharing an edge (not only a corner) with the object.
-        const bool rim = !inside && ((x >= 2 && x < 8 && (y == 1 || y == 8)) || (y >= 2 && y < 8 && (x == 1 || x == 8)));
+        const bool rim =
+            !inside && ((x >= 2 && x < 8 && (y == 1 || y == 8)) || (y >= 2 && y < 8 && (x == 1 || x == 8)));
         const uint8_t* px = &rgba[size_t(y * 10 + x) * 4];
         ASSERT_EQ(px[0], painted ? 10 : rim ? 1 : 0) << x << "," << y;
         ASSERT_EQ(px[1], painted ? 20 : rim ? 2 : 0) << x << "," << y;

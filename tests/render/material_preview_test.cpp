@@ -24,7 +24,8 @@ TEST(MaterialPreview, EveryExampleMaterialHasASwatch) {
       const SceneDesc swatch = material_preview_scene(*loaded.scene, m.name, 24, 2);
       const RgbImage img = testing::render_scene(swatch, 2, 1);
       ASSERT_EQ(img.pixels.size(), 24u * 24u);
-      for (const Color& c : img.pixels) ASSERT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+      for (const Color& c : img.pixels)
+        ASSERT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
       ++swatches;
     }
   }

@@ -59,7 +59,8 @@ TEST(ProgressiveRenderer, DenoisingTheViewportKeepsItsSamples) {
   while (std::chrono::steady_clock::now() < deadline) {
     shown = renderer.latest();
     if (shown && shown->finished) break;
-    renderer.wait_for_generation(renderer.generation(), std::chrono::steady_clock::now() + std::chrono::milliseconds(50));
+    renderer.wait_for_generation(renderer.generation(),
+                                 std::chrono::steady_clock::now() + std::chrono::milliseconds(50));
   }
   ASSERT_TRUE(shown && shown->finished);
   EXPECT_FALSE(shown->denoised);
@@ -68,7 +69,8 @@ TEST(ProgressiveRenderer, DenoisingTheViewportKeepsItsSamples) {
   view.denoise = true;
   const uint64_t before = renderer.generation();
   renderer.set_view(view);
-  ASSERT_TRUE(renderer.wait_for_generation(before, std::chrono::steady_clock::now() + std::chrono::seconds(30)));
+  ASSERT_TRUE(
+      renderer.wait_for_generation(before, std::chrono::steady_clock::now() + std::chrono::seconds(30)));
   shown = renderer.latest();
   EXPECT_TRUE(shown->denoised);
   EXPECT_EQ(shown->accumulation, accumulation);

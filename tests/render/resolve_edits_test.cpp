@@ -47,7 +47,8 @@ void expect_kept_samples(const SceneDesc& before, const SceneDesc& after, const 
   ProgressiveRenderer renderer(2);
   renderer.set_limits({6, 0.0, 0.0});
   const uint64_t first = renderer.submit(before);
-  const Snapshot done = wait_until(renderer, [&](const auto& s) { return s.revision == first && s.finished; });
+  const Snapshot done =
+      wait_until(renderer, [&](const auto& s) { return s.revision == first && s.finished; });
   ASSERT_TRUE(done);
   ASSERT_EQ(done->stats.spp, 6u);
   const uint64_t second = renderer.submit(after);
@@ -90,7 +91,8 @@ TEST(ResolveEdits, AMaterialEditRestarts) {
   ASSERT_TRUE(wait_until(renderer, [&](const auto& s) { return s.revision == first && s.finished; }));
   std::get<DiffuseDesc>(d.materials[0].data).albedo = Color(0.2f, 0.8f, 0.2f);
   const uint64_t second = renderer.submit(d);
-  const Snapshot edited = wait_until(renderer, [&](const auto& s) { return s.revision == second && s.finished; });
+  const Snapshot edited =
+      wait_until(renderer, [&](const auto& s) { return s.revision == second && s.finished; });
   ASSERT_TRUE(edited);
   const uint64_t restarted = edited->accumulation;
   // The samples are all new: the image equals a render of the edited document alone.

@@ -70,7 +70,8 @@ void render_slice(const std::shared_ptr<const RenderScene>& scene, uint32_t firs
 }
 
 // A session that rendered passes [0, passes) of the whole image.
-std::unique_ptr<RenderSession> render_whole(const std::shared_ptr<const RenderScene>& scene, uint32_t passes) {
+std::unique_ptr<RenderSession> render_whole(const std::shared_ptr<const RenderScene>& scene,
+                                            uint32_t passes) {
   auto one = std::make_unique<RenderSession>(2);
   one->set_scene(scene, some_aovs());
   for (uint32_t p = 0; p < passes; ++p) EXPECT_TRUE(one->render_pass());
@@ -185,8 +186,8 @@ TEST(SliceRender, ResumesACheckpointCutMidPass) {
     const auto done = std::count(t.begin(), t.end(), uint8_t(1));
     if (finished || done == 0 || size_t(done) == t.size()) continue;
     cut = true;
-    const PartialInfo info{64,   48,          {0, 0, 64, 48}, 0, s.stats().passes, t, 1.f, 0,
-                           "{}", some_aovs(), true,           0, {}};
+    const PartialInfo info{64, 48, {0, 0, 64, 48}, 0, s.stats().passes, t, 1.f, 0, "{}", some_aovs(), true,
+                           0,  {}};
     std::string error;
     ASSERT_TRUE(write_partial_file(s.film(), info, file, &error)) << error;
   }

@@ -24,7 +24,8 @@ void expect_net(const std::vector<Vec2>& pts) {
       const int cx = int(p.x * float(cols)), cy = int(p.y * float(rows));
       ++cells[size_t(cy * cols + cx)];
     }
-    for (int c = 0; c < n; ++c) ASSERT_EQ(cells[size_t(c)], 1) << "n=" << n << " cols=" << cols << " cell " << c;
+    for (int c = 0; c < n; ++c)
+      ASSERT_EQ(cells[size_t(c)], 1) << "n=" << n << " cols=" << cols << " cell " << c;
   }
 }
 

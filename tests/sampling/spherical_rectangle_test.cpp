@@ -46,7 +46,13 @@ struct Rect {
 const Vec3 kTilted = glm::normalize(Vec3(1.f, 0.f, 1.f)), kTiltedY = glm::normalize(Vec3(-1.f, 0.f, 1.f));
 const Rect kRects[] = {
     {"under the centre", {0.f, 0.f, 0.f}, {-1.f, 1.f, -1.f}, {1.f, 0.f, 0.f}, {0.f, 0.f, 1.f}, 2.f, 2.f},
-    {"long, to one side", {3.f, -0.5f, 0.2f}, {-1.f, 1.f, -0.5f}, {1.f, 0.f, 0.f}, {0.f, 0.f, 1.f}, 4.f, 0.5f},
+    {"long, to one side",
+     {3.f, -0.5f, 0.2f},
+     {-1.f, 1.f, -0.5f},
+     {1.f, 0.f, 0.f},
+     {0.f, 0.f, 1.f},
+     4.f,
+     0.5f},
     {"close, from behind", {0.3f, 1.1f, 0.2f}, {-1.f, 1.f, -1.f}, {1.f, 0.f, 0.f}, {0.f, 0.f, 1.f}, 2.f, 2.f},
     {"tilted, far", {0.f, 0.f, 0.f}, {4.f, 6.f, 3.f}, kTilted, kTiltedY, 1.f, 0.6f},
     {"grazing", {0.f, 0.f, 0.f}, {2.f, 0.02f, -1.f}, {1.f, 0.f, 0.f}, {0.f, 0.f, 1.f}, 3.f, 2.f},
@@ -60,7 +66,8 @@ TEST(SphericalRectangle, SolidAngleIsTheRectangles) {
     EXPECT_NEAR(s->solid_angle, expected, 1e-6 * expected + 1e-9) << r.name;
   }
   // In the rectangle's plane it subtends nothing.
-  EXPECT_FALSE(spherical_rectangle({0.f, 1.f, 0.f}, {-1.f, 1.f, -1.f}, {1.f, 0.f, 0.f}, {0.f, 0.f, 1.f}, 2.f, 2.f));
+  EXPECT_FALSE(
+      spherical_rectangle({0.f, 1.f, 0.f}, {-1.f, 1.f, -1.f}, {1.f, 0.f, 0.f}, {0.f, 0.f, 1.f}, 2.f, 2.f));
 }
 
 TEST(SphericalRectangle, PointsAreUniformInSolidAngle) {
@@ -87,13 +94,14 @@ TEST(SphericalRectangle, PointsAreUniformInSolidAngle) {
       ASSERT_GE(v, -1e-4f) << r.name;
       ASSERT_LE(v, 1.f + 1e-4f) << r.name;
       ASSERT_LT(std::abs(glm::dot(d, glm::cross(r.x, r.y))), 1e-3f * (r.width + r.height)) << r.name;
-      const int i = std::clamp(int(u * kCells), 0, kCells - 1), j = std::clamp(int(v * kCells), 0, kCells - 1);
+      const int i = std::clamp(int(u * kCells), 0, kCells - 1),
+                j = std::clamp(int(v * kCells), 0, kCells - 1);
       observed[size_t(i * kCells + j)] += 1.0;
     }
     const test_support::ChiSquareResult chi = test_support::chi_square(observed, expected);
     EXPECT_TRUE(chi.error.empty()) << r.name << ": " << chi.error;
-    EXPECT_GT(chi.p_value, significance) << r.name << ": statistic " << chi.statistic << ", " << chi.dof
-                                         << " dof";
+    EXPECT_GT(chi.p_value, significance)
+        << r.name << ": statistic " << chi.statistic << ", " << chi.dof << " dof";
   }
 }
 

@@ -20,7 +20,8 @@ inline std::string editor_unavailable() {
   int code = 0;
   run_command("command -v xvfb-run", &code);
   if (code != 0) return "xvfb-run is not installed";
-  if (!std::filesystem::exists(std::string(INKRAY_BINARY_DIR) + "/bin/inkray")) return "the editor was not built";
+  if (!std::filesystem::exists(std::string(INKRAY_BINARY_DIR) + "/bin/inkray"))
+    return "the editor was not built";
   return {};
 }
 
@@ -36,8 +37,9 @@ inline std::string editor_command(const std::filesystem::path& config_dir, int w
 // window of the given size, `script` as its input script (written to dir/input.txt), the
 // document it ends with written to dir/dump.json and its window to dir/screenshot.png,
 // plus `options`. Its output; the exit code in *code.
-inline std::string run_editor_script(const ScratchFolder& dir, int width, int height, const std::string& script,
-                                     const std::string& options, const std::string& scene, int* code) {
+inline std::string run_editor_script(const ScratchFolder& dir, int width, int height,
+                                     const std::string& script, const std::string& options,
+                                     const std::string& scene, int* code) {
   std::ofstream(dir / "input.txt") << script;
   return run_command(editor_command(dir.path(), width, height) + " --input-script " +
                          (dir / "input.txt").string() + " " + options + " --screenshot " +

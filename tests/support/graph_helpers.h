@@ -11,7 +11,9 @@
 
 namespace inkray::testing {
 
-inline void add(GraphDesc& g, std::string id, NodeVariant node) { g.nodes.push_back({std::move(id), std::move(node)}); }
+inline void add(GraphDesc& g, std::string id, NodeVariant node) {
+  g.nodes.push_back({std::move(id), std::move(node)});
+}
 inline void link(GraphDesc& g, std::string from, std::string output, std::string to, std::string input) {
   g.links.push_back({std::move(from), std::move(output), std::move(to), std::move(input)});
 }
@@ -39,8 +41,8 @@ inline CompiledGraph compile(const GraphDesc& g, const std::filesystem::path& ba
 
 // The raw value (before any closure clamps it) of `node`'s output `output` at sp:
 // the socket is wired into an unlit surface's colour and its register read back.
-inline Vec3 socket_value(GraphDesc g, const std::string& node, const std::string& output, const ShadingPoint& sp,
-                         const std::filesystem::path& base = ".") {
+inline Vec3 socket_value(GraphDesc g, const std::string& node, const std::string& output,
+                         const ShadingPoint& sp, const std::filesystem::path& base = ".") {
   add(g, "probe_surface", UnlitDesc{});
   add(g, "probe_out", OutputNode{});
   link(g, node, output, "probe_surface", "color");

@@ -44,7 +44,8 @@ TEST(CommandStack, NewEditDropsRedo) {
 TEST(CommandStack, DragMergesIntoOneStep) {
   SceneDesc scene;
   CommandStack stack;
-  for (float fov = 41.f; fov <= 60.f; fov += 1.f) stack.apply(scene, with_fov(scene, fov), "fov", "camera:vfov");
+  for (float fov = 41.f; fov <= 60.f; fov += 1.f)
+    stack.apply(scene, with_fov(scene, fov), "fov", "camera:vfov");
   EXPECT_EQ(stack.size(), 1u);
   EXPECT_EQ(scene.camera.vfov, 60.f);
   stack.end_merge();  // the drag ended: the next drag is a new step

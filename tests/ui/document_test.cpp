@@ -21,7 +21,8 @@ class DocumentFiles : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("inkray_document_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("inkray_document_test_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
@@ -157,9 +158,11 @@ TEST_F(DocumentFiles, AutosaveWritesFindsAndClears) {
   const auto t0 = std::chrono::steady_clock::now();
   EXPECT_FALSE(autosave.tick(s, dir_ / "mine.json", 5, true, t0));  // the interval starts now
   EXPECT_FALSE(autosave.tick(s, dir_ / "mine.json", 5, true, t0 + std::chrono::seconds(30)));
-  EXPECT_FALSE(autosave.tick(s, dir_ / "mine.json", 5, false, t0 + std::chrono::seconds(61)));  // saved: nothing to keep
+  EXPECT_FALSE(autosave.tick(s, dir_ / "mine.json", 5, false,
+                             t0 + std::chrono::seconds(61)));  // saved: nothing to keep
   EXPECT_TRUE(autosave.tick(s, dir_ / "mine.json", 5, true, t0 + std::chrono::seconds(62)));
-  EXPECT_FALSE(autosave.tick(s, dir_ / "mine.json", 5, true, t0 + std::chrono::seconds(200)));  // unchanged since
+  EXPECT_FALSE(
+      autosave.tick(s, dir_ / "mine.json", 5, true, t0 + std::chrono::seconds(200)));  // unchanged since
   const auto recovered = autosave.find();
   ASSERT_TRUE(recovered);
   EXPECT_FLOAT_EQ(recovered->scene.camera.vfov, 12.f);

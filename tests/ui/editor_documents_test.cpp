@@ -147,10 +147,12 @@ TEST_F(EditorDocuments, AutosaveRecoversEverythingTheEditorBuilds) {
 }
 
 TEST(MissingFilesDocument, OpensAndListsThemApart) {
-  const fs::path folder = fs::temp_directory_path() / ("inkray_missing_files_open_" + std::to_string(::getpid()));
+  const fs::path folder =
+      fs::temp_directory_path() / ("inkray_missing_files_open_" + std::to_string(::getpid()));
   fs::remove_all(folder);
   fs::create_directories(folder);
-  fs::copy_file(fs::path(INKRAY_SOURCE_DIR) / "scenes/mesh.json", folder / "mesh.json");  // alone: its files are missing
+  fs::copy_file(fs::path(INKRAY_SOURCE_DIR) / "scenes/mesh.json",
+                folder / "mesh.json");  // alone: its files are missing
   Document document;
   std::vector<std::string> errors, warnings, missing;
   ASSERT_TRUE(document.open(folder / "mesh.json", &errors, &warnings, &missing)) << joined(errors);
@@ -158,7 +160,8 @@ TEST(MissingFilesDocument, OpensAndListsThemApart) {
   ASSERT_EQ(missing.size(), 3u);
   EXPECT_NE(missing[1].find("meshes/torus_knot.obj"), std::string::npos) << missing[1];
   EXPECT_NE(missing[1].find("object \"knot\""), std::string::npos) << missing[1];
-  EXPECT_EQ(std::get<MeshDesc>(document.scene().objects[1].shape).path, "meshes/torus_knot.obj");  // kept as written
+  EXPECT_EQ(std::get<MeshDesc>(document.scene().objects[1].shape).path,
+            "meshes/torus_knot.obj");  // kept as written
   fs::remove_all(folder);
 }
 

@@ -30,12 +30,12 @@ TEST(EditorDrop, MeshThenImageLandOnTheDocument) {
   std::filesystem::copy_file(source / "resources/brushes/dab.png", dir / "dab.png");
   std::ofstream(dir / "notes.txt") << "not a scene\n";
   const auto dump = dir / "after.json";
-  const std::string out = run_command(
-      editor_command(dir, 1280, 720) + " --frames 20 --screenshot " + (dir / "shot.png").string() + " --drop " +
-          (dir / "cube.obj").string() + " --drop " + (dir / "dab.png").string() + " --drop " +
-          (dir / "notes.txt").string() + " --scene-dump " + dump.string() + " " +
-          (source / "scenes/toon.json").string(),
-      &code);
+  const std::string out =
+      run_command(editor_command(dir, 1280, 720) + " --frames 20 --screenshot " +
+                      (dir / "shot.png").string() + " --drop " + (dir / "cube.obj").string() + " --drop " +
+                      (dir / "dab.png").string() + " --drop " + (dir / "notes.txt").string() +
+                      " --scene-dump " + dump.string() + " " + (source / "scenes/toon.json").string(),
+                  &code);
   ASSERT_EQ(code, 0) << out;
 
   std::ifstream in(dump);
@@ -44,7 +44,8 @@ TEST(EditorDrop, MeshThenImageLandOnTheDocument) {
   const SceneLoadResult loaded = load_scene(dump, ReadFor::editing);
   ASSERT_TRUE(loaded.scene) << text.str();
   const SceneDesc& scene = *loaded.scene;
-  const auto cube = std::find_if(scene.objects.begin(), scene.objects.end(), [](const ObjectDesc& o) { return o.name == "cube"; });
+  const auto cube = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                 [](const ObjectDesc& o) { return o.name == "cube"; });
   ASSERT_NE(cube, scene.objects.end()) << "the dropped mesh was not imported";
   const auto* mesh = std::get_if<MeshDesc>(&cube->shape);
   ASSERT_NE(mesh, nullptr);

@@ -43,8 +43,8 @@ std::map<std::string, Widget> read_report(const std::filesystem::path& file, Rec
       continue;
     }
     Widget w;
-    words >> w.item.x0 >> w.item.y0 >> w.item.x1 >> w.item.y1 >> w.visible.x0 >> w.visible.y0 >> w.visible.x1 >>
-        w.visible.y1;
+    words >> w.item.x0 >> w.item.y0 >> w.item.x1 >> w.item.y1 >> w.visible.x0 >> w.visible.y0 >>
+        w.visible.x1 >> w.visible.y1;
     if (words) widgets[name] = w;
   }
   return widgets;
@@ -73,11 +73,11 @@ TEST_P(EditorLayout, EveryToolbarControlIsInsideItsPanel) {
   const std::string scene = std::string(INKRAY_SOURCE_DIR) + "/scenes/toon.json";
   const auto shot = dir / "editor.png", report = dir / "widgets.txt";
   // A fresh config folder: the default panel sizes and interface size.
-  const std::string out = run_command(editor_command(dir, width, height) + " --ui-scale " + std::to_string(ui_scale) +
-                                          " --select two_band_ball --screenshot " +
-                                          shot.string() + " --widget-report " + report.string() + " --frames 10 " +
-                                          scene,
-                                      &code);
+  const std::string out =
+      run_command(editor_command(dir, width, height) + " --ui-scale " + std::to_string(ui_scale) +
+                      " --select two_band_ball --screenshot " + shot.string() + " --widget-report " +
+                      report.string() + " --frames 10 " + scene,
+                  &code);
   ASSERT_EQ(code, 0) << out;
 
   RgbImage image;

@@ -18,7 +18,6 @@ namespace {
 
 using testing::run_command;
 
-
 // Mean display value (sRGB-encoded luminance-like average of r, g, b) of a rectangle.
 float block_mean(const RgbImage& img, float x0, float y0, float x1, float y1) {
   double sum = 0.0;
@@ -27,7 +26,8 @@ float block_mean(const RgbImage& img, float x0, float y0, float x1, float y1) {
     for (int x = int(x0); x < int(x1); ++x) {
       const Color& c = img.at(x, y);
       sum += (linear_to_srgb(std::min(c.r, 1.f)) + linear_to_srgb(std::min(c.g, 1.f)) +
-              linear_to_srgb(std::min(c.b, 1.f))) / 3.0;
+              linear_to_srgb(std::min(c.b, 1.f))) /
+             3.0;
       ++n;
     }
   }
@@ -44,9 +44,10 @@ TEST(EditorScreenshot, ViewportShowsTheRenderedScene) {
   const std::string scene = std::string(INKRAY_SOURCE_DIR) + "/scenes/cornell.json";
 
   const std::string shot = (dir / "editor.png").string();
-  const std::string out = run_command("INKRAY_CONFIG_DIR=" + dir.string() + " xvfb-run -a -s '-screen 0 1600x900x24' " + bin +
-                                  "inkray --screenshot " + shot + " --frames 10 " + scene,
-                              &code);
+  const std::string out =
+      run_command("INKRAY_CONFIG_DIR=" + dir.string() + " xvfb-run -a -s '-screen 0 1600x900x24' " + bin +
+                      "inkray --screenshot " + shot + " --frames 10 " + scene,
+                  &code);
   ASSERT_EQ(code, 0) << out;
   int vx = 0, vy = 0, vw = 0, vh = 0;
   const size_t at = out.find("viewport image:");
@@ -75,8 +76,9 @@ TEST(EditorScreenshot, ViewportShowsTheRenderedScene) {
       if (gy < 2 && gx < 4) continue;  // the statistics overlay sits in the top-left corner
       const float e = block_mean(editor, vx + vw * gx / float(kGrid), vy + vh * gy / float(kGrid),
                                  vx + vw * (gx + 1) / float(kGrid), vy + vh * (gy + 1) / float(kGrid));
-      const float r = block_mean(reference, reference.width * gx / float(kGrid), reference.height * gy / float(kGrid),
-                                 reference.width * (gx + 1) / float(kGrid), reference.height * (gy + 1) / float(kGrid));
+      const float r =
+          block_mean(reference, reference.width * gx / float(kGrid), reference.height * gy / float(kGrid),
+                     reference.width * (gx + 1) / float(kGrid), reference.height * (gy + 1) / float(kGrid));
       lo = std::min(lo, e), hi = std::max(hi, e);
       EXPECT_NEAR(e, r, 0.08f) << "block " << gx << "," << gy;
       ++compared;

@@ -13,7 +13,8 @@ namespace {
 TEST(FileDrop, KindsByExtension) {
   EXPECT_EQ(drop_kind("a/scene.JSON"), DropKind::scene);
   EXPECT_EQ(drop_kind("bunny.obj"), DropKind::mesh);
-  for (const char* f : {"t.png", "t.JPG", "t.jpeg", "sky.hdr", "t.tga"}) EXPECT_EQ(drop_kind(f), DropKind::image) << f;
+  for (const char* f : {"t.png", "t.JPG", "t.jpeg", "sky.hdr", "t.tga"})
+    EXPECT_EQ(drop_kind(f), DropKind::image) << f;
   EXPECT_EQ(drop_kind("render.pfm"), DropKind::unknown);  // written by inkray, never read as a texture
   EXPECT_EQ(drop_kind("notes.txt"), DropKind::unknown);
   EXPECT_EQ(drop_kind("noextension"), DropKind::unknown);
@@ -27,7 +28,8 @@ TEST(FileDrop, ImageOnAnObjectTexturesItsMaterial) {
   std::string why;
   ASSERT_TRUE(drop_image_on(scene, object, "/scenes/shot/textures/wood.png", &why)) << why;
   const auto& name = scene.objects[0].material;
-  const auto it = std::find_if(scene.materials.begin(), scene.materials.end(), [&](auto& m) { return m.name == name; });
+  const auto it =
+      std::find_if(scene.materials.begin(), scene.materials.end(), [&](auto& m) { return m.name == name; });
   ASSERT_NE(it, scene.materials.end());
   bool found = false;
   std::visit(
@@ -64,7 +66,8 @@ TEST(FileDrop, RefusalsNameTheFileAndLeaveTheSceneAlone) {
   graph.data = GraphDesc{};
   scene.materials.push_back(graph);
   const SceneDesc with_graph = scene;
-  EXPECT_FALSE(drop_image_on(scene, Selection{ItemKind::material, int(scene.materials.size()) - 1}, "/x/wood.png", &why));
+  EXPECT_FALSE(drop_image_on(scene, Selection{ItemKind::material, int(scene.materials.size()) - 1},
+                             "/x/wood.png", &why));
   EXPECT_NE(why.find("node graph"), std::string::npos) << why;
   EXPECT_EQ(scene, with_graph);
 }

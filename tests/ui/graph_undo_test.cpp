@@ -39,16 +39,20 @@ TEST(GraphUndo, EveryEditUndoesAndRedoesExactly) {
   Document doc;
   doc.reset(graph_scene());
   std::vector<SceneDesc> states = {doc.scene()};
-  commit(doc, [](GraphDesc& g) { add_node(g, "noise_texture", -200.f, 0.f); }, "Add noise");
+  commit(
+      doc, [](GraphDesc& g) { add_node(g, "noise_texture", -200.f, 0.f); }, "Add noise");
   states.push_back(doc.scene());
-  commit(doc, [](GraphDesc& g) { ASSERT_FALSE(connect(g, "noise_texture", "fac", "rim_mask", "b")); }, "Link");
+  commit(
+      doc, [](GraphDesc& g) { ASSERT_FALSE(connect(g, "noise_texture", "fac", "rim_mask", "b")); }, "Link");
   states.push_back(doc.scene());
   // A drag: many moves under one merge key are one step.
   for (int i = 0; i < 10; ++i)
-    commit(doc, [](GraphDesc& g) { move_nodes(g, {"toon"}, 3.f, 1.f); }, "Move", "graph-move:facing_toon_rim");
+    commit(
+        doc, [](GraphDesc& g) { move_nodes(g, {"toon"}, 3.f, 1.f); }, "Move", "graph-move:facing_toon_rim");
   doc.end_merge();
   states.push_back(doc.scene());
-  commit(doc, [](GraphDesc& g) { remove_nodes(g, {"fresnel"}); }, "Delete");
+  commit(
+      doc, [](GraphDesc& g) { remove_nodes(g, {"fresnel"}); }, "Delete");
   states.push_back(doc.scene());
   EXPECT_EQ(doc.history().size(), 4u) << "the drag is one undo step";
 
@@ -116,7 +120,8 @@ TEST(GraphBuild, EveryExampleLookIsBuiltWithTheEditorsOperations) {
         id_of[n.id] = id;
       }
       for (const GraphLinkDesc& l : target->links)
-        ASSERT_EQ(connect(g, id_of[l.from], l.output, id_of[l.to], l.input), std::nullopt) << l.from << " -> " << l.to;
+        ASSERT_EQ(connect(g, id_of[l.from], l.output, id_of[l.to], l.input), std::nullopt)
+            << l.from << " -> " << l.to;
       m.data = g;
     }
     const RgbImage want = testing::render_scene(example, 2);

@@ -47,8 +47,8 @@ TEST(NodeEditorKeys, NodeAndRenderFieldsShowTheFrameAndTakeKeys) {
   if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
   ScratchFolder dir;
   int code = 0;
-  const std::string out = run_editor_script(dir, 1600, 900, kScript, "--threads 1 --node-editor paint --frames 80",
-                                            "node_keys.json", &code);
+  const std::string out = run_editor_script(
+      dir, 1600, 900, kScript, "--threads 1 --node-editor paint --frames 80", "node_keys.json", &code);
   ASSERT_EQ(code, 0) << out;
   ASSERT_NE(out.find("input script: done"), std::string::npos) << out;
 

@@ -31,7 +31,6 @@ using testing::run_command;
 constexpr int kTolerancePixels = 2;  // against the stored layout: rounding, not redesigns
 constexpr int kColorTolerance = 40;  // 8-bit, per channel: pins are small and antialiased
 
-
 struct Box {
   int x = 0, y = 0, w = 0, h = 0;
 };
@@ -112,9 +111,9 @@ TEST(NodeEditorScreenshot, GraphToonRimLayout) {
   const std::string layout_file = (dir / "graph_toon_rim.layout").string();
   const std::string out =
       run_command("INKRAY_CONFIG_DIR=" + dir.string() + " xvfb-run -a -s '-screen 0 1600x900x24' " + bin +
-              "inkray --screenshot " + shot + " --frames 10 --node-editor " + material->name +
-              " --node-layout " + layout_file + " " + scene_file,
-          &code);
+                      "inkray --screenshot " + shot + " --frames 10 --node-editor " + material->name +
+                      " --node-layout " + layout_file + " " + scene_file,
+                  &code);
   ASSERT_EQ(code, 0) << out;
   const std::string text = read_text(layout_file);
   const Layout layout = parse_layout(text);

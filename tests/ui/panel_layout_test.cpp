@@ -38,8 +38,8 @@ TEST(PanelLayout, PanelsTileTheWindowAtEverySizeAndScale) {
         float total = 0.f;
         for (size_t i = 0; i < panels.size(); ++i) {
           const PanelRect& p = panels[i];
-          SCOPED_TRACE(testing::Message() << size[0] << "x" << size[1] << " scale " << scale << " nodes " << nodes
-                                          << " panel " << i);
+          SCOPED_TRACE(testing::Message() << size[0] << "x" << size[1] << " scale " << scale << " nodes "
+                                          << nodes << " panel " << i);
           EXPECT_GE(p.x, 0.f);
           EXPECT_GE(p.y, kTop);
           EXPECT_LE(p.x + p.w, size[0] + 0.01f);
@@ -62,20 +62,23 @@ TEST(PanelLayout, DraggingASharedEdgeMovesThatEdge) {
     // The scene panel's right edge 40 px to the right.
     PanelRect dragged = r.scene;
     dragged.w += 40.f;
-    PanelRects after = place_panels(resized(layout, Panel::scene, r, dragged, 1.f, nodes), 1600, 900, kTop, 1.f, nodes);
+    PanelRects after =
+        place_panels(resized(layout, Panel::scene, r, dragged, 1.f, nodes), 1600, 900, kTop, 1.f, nodes);
     EXPECT_FLOAT_EQ(after.scene.w, r.scene.w + 40.f);
     EXPECT_FLOAT_EQ(after.viewport.x, r.viewport.x + 40.f);
     EXPECT_FLOAT_EQ(after.properties.w, r.properties.w);
     // The properties panel's left edge 30 px to the left.
     dragged = r.properties;
     dragged.x -= 30.f, dragged.w += 30.f;
-    after = place_panels(resized(layout, Panel::properties, r, dragged, 1.f, nodes), 1600, 900, kTop, 1.f, nodes);
+    after =
+        place_panels(resized(layout, Panel::properties, r, dragged, 1.f, nodes), 1600, 900, kTop, 1.f, nodes);
     EXPECT_FLOAT_EQ(after.properties.w, r.properties.w + 30.f);
     EXPECT_FLOAT_EQ(after.scene.w, r.scene.w);
     // The viewport's bottom edge 50 px down.
     dragged = r.viewport;
     dragged.h += 50.f;
-    after = place_panels(resized(layout, Panel::viewport, r, dragged, 1.f, nodes), 1600, 900, kTop, 1.f, nodes);
+    after =
+        place_panels(resized(layout, Panel::viewport, r, dragged, 1.f, nodes), 1600, 900, kTop, 1.f, nodes);
     EXPECT_NEAR(after.viewport.h, r.viewport.h + 50.f, 1.f);
     // The timeline stays under the viewport, as tall as before.
     EXPECT_NEAR(after.timeline.y, after.viewport.y + after.viewport.h, 0.01f);

@@ -72,7 +72,8 @@ TEST(TimelineEditor, KeysScrubsPlaysAndUndoesFromTheKeyboardAndMouse) {
 
   // Shift+Right went to the shot's last frame; the drag there moved the ball along x.
   EXPECT_EQ(printed_numbers(out, "frame", 0), std::vector<double>{24}) << out;
-  const std::vector<double> at_end = printed_numbers(out, "value", 0), at_start = printed_numbers(out, "value", 1);
+  const std::vector<double> at_end = printed_numbers(out, "value", 0),
+                            at_start = printed_numbers(out, "value", 1);
   ASSERT_EQ(at_end.size(), 3u) << out;
   ASSERT_EQ(at_start.size(), 3u) << out;
   EXPECT_EQ(at_start[0], -1.0);

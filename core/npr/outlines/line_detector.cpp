@@ -55,7 +55,8 @@ uint32_t breaks(const PerceivedSurface& c, const PerceivedSurface& s, const Line
   if (c.material != s.material) found |= bit(LineType::material);
   // Depth lines are occlusions with a large gap behind them: a receding plane
   // changes distance quickly but continuously and draws none.
-  if (occlusion && std::abs(c.distance - s.distance) / nearest > setup.depth_jump) found |= bit(LineType::depth);
+  if (occlusion && std::abs(c.distance - s.distance) / nearest > setup.depth_jump)
+    found |= bit(LineType::depth);
   return found;
 }
 
@@ -155,7 +156,8 @@ LineSetup make_line_setup(const RenderScene& scene, int divisor) {
   // The film pixel's samples spread over a box 2 * filter_radius wide, or a
   // Gaussian of sigma filter_radius / 3 (a box sqrt(12) sigma wide has its variance).
   const RenderSettings& rs = scene.settings;
-  const float footprint = rs.filter == PixelFilter::box ? 2.f * rs.filter_radius : rs.filter_radius / 3.f * std::sqrt(12.f);
+  const float footprint =
+      rs.filter == PixelFilter::box ? 2.f * rs.filter_radius : rs.filter_radius / 3.f * std::sqrt(12.f);
   s.film_pixel = std::max(footprint, 1e-3f) * float(std::max(divisor, 1));
   s.max_blur = kIncoherentSpread * s.nominal_radius_px * s.pixel_angle;
   s.at_width = make_stencil(s, s.width_px);
@@ -168,7 +170,8 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
   LineSample out;
   out.rays = float(draw.count);
   if (draw.count <= 0) return out;
-  const PerceivedSurface centre = find_perceived_surface(scene, centre_ray, u_mix, setup.max_blur, rays, &primary);
+  const PerceivedSurface centre =
+      find_perceived_surface(scene, centre_ray, u_mix, setup.max_blur, rays, &primary);
   if (centre.lost || (centre.hit && scene.objects[centre.object].lines.exclude)) return out;
   const float width_px = sample_width_px(scene, setup, camera, centre, centre_ray.d);
   const Stencil stencil = width_px == setup.width_px ? setup.at_width : make_stencil(setup, width_px);

@@ -30,21 +30,21 @@ struct Stencil {
 
 // What a scene's outline settings mean for every sample, worked out once per scene.
 struct LineSetup {
-  bool active = false;                      // any line type enabled with a width above 0
-  uint32_t enabled = 0;                     // bit per LineType
+  bool active = false;                        // any line type enabled with a width above 0
+  uint32_t enabled = 0;                       // bit per LineType
   std::array<float, kLineTypeCount> width{};  // per-type width multipliers
   float max_width = 0.f;                      // the largest of them: the stencil's radius
   int quality = 1;                            // stencil rays per sample where lines are being found
   bool adaptive = true;                       // line_sampling.h may trace fewer or more
-  float width_px = 0.f;        // base width in pixels of this image (pixels and percent units)
-  bool world_width = false;    // width in world units: depends on the centre's distance
-  float nominal_radius_px = 1.f;  // the widest type's stencil radius for a typical sample
-  float miss_distance = 1.f;   // distance used for world widths and falloff where the centre sees nothing
+  float width_px = 0.f;                       // base width in pixels of this image (pixels and percent units)
+  bool world_width = false;                   // width in world units: depends on the centre's distance
+  float nominal_radius_px = 1.f;              // the widest type's stencil radius for a typical sample
+  float miss_distance = 1.f;  // distance used for world widths and falloff where the centre sees nothing
   float crease_cos = 0.f, intersection_cos = 0.f;
-  float depth_jump = 0.f;      // relative distance jump of depth lines
-  float pixel_angle = 0.f;     // radians per pixel of the full image at its centre
-  float film_pixel = 1.f;      // width of a film pixel's sample footprint, in full-image pixels
-  float max_blur = 0.f;        // roughness blur, radians, beyond which mirrors and glass are not followed
+  float depth_jump = 0.f;   // relative distance jump of depth lines
+  float pixel_angle = 0.f;  // radians per pixel of the full image at its centre
+  float film_pixel = 1.f;   // width of a film pixel's sample footprint, in full-image pixels
+  float max_blur = 0.f;     // roughness blur, radians, beyond which mirrors and glass are not followed
   // The stencil of samples at width_px, the usual case: only world widths,
   // falloff and width overrides make their own.
   Stencil at_width;
@@ -64,7 +64,7 @@ struct StencilDraw {
   uint32_t x = 0, y = 0;  // the film pixel
   uint32_t first = 0;     // stencil rays the pixel has traced before
   uint32_t seed = 0;
-  int count = 1;          // rays to trace for this sample
+  int count = 1;  // rays to trace for this sample
 };
 
 // The stencil rays come from `camera` (the one the sample's own ray came

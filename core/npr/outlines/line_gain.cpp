@@ -61,7 +61,7 @@ std::array<float, kEntries> make_table() {
   const double target = fine_ink();
   for (int i = 0; i < kEntries; ++i) {
     const double p = std::exp2(kLow + double(i) / kPerOctave);
-    double lo = 0.5, hi = kLineGain;  // ink grows with the gain
+    double lo = 0.5, hi = kLineGain;         // ink grows with the gain
     for (int step = 0; step < 24; ++step) {  // 2^-24 of the bracket: float precision
       const double mid = 0.5 * (lo + hi);
       (pixel_ink(p, mid) < target ? lo : hi) = mid;

@@ -132,14 +132,23 @@ uint32_t stencil_rays_between(const LineSetup& setup, const LinePixel& pixel, ui
   const uint32_t quality = uint32_t(setup.quality);
   float rate = 1.f;
   switch (setup.adaptive ? pixel.kind : LineKind::probing) {
-    case LineKind::probing: return quality * (end - first);
-    case LineKind::edge: return uint32_t(edge_rays(setup)) * (end - first);
-    case LineKind::quiet: rate = kQuietRate; break;
-    case LineKind::beside: rate = kBesideRate; break;
-    case LineKind::solid: rate = kSolidRate; break;
+    case LineKind::probing:
+      return quality * (end - first);
+    case LineKind::edge:
+      return uint32_t(edge_rays(setup)) * (end - first);
+    case LineKind::quiet:
+      rate = kQuietRate;
+      break;
+    case LineKind::beside:
+      rate = kBesideRate;
+      break;
+    case LineKind::solid:
+      rate = kSolidRate;
+      break;
     case LineKind::finding: {
       LinePixel p = pixel;  // decides on the way: count sample by sample
-      for (uint32_t pass = first; pass < end; ++pass) p.rays += uint32_t(stencil_rays(setup, p, x, y, pass, seed));
+      for (uint32_t pass = first; pass < end; ++pass)
+        p.rays += uint32_t(stencil_rays(setup, p, x, y, pass, seed));
       return p.rays - pixel.rays;
     }
   }

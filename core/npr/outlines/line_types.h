@@ -18,12 +18,18 @@ inline constexpr std::array<std::string_view, kLineTypeCount> kLineTypeNames = {
 
 inline const LineStyleDesc& line_style(const OutlineDesc& d, LineType t) {
   switch (t) {
-    case LineType::depth: return d.depth;
-    case LineType::crease: return d.crease;
-    case LineType::intersection: return d.intersection;
-    case LineType::material: return d.material;
-    case LineType::object: return d.object;
-    case LineType::silhouette: break;
+    case LineType::depth:
+      return d.depth;
+    case LineType::crease:
+      return d.crease;
+    case LineType::intersection:
+      return d.intersection;
+    case LineType::material:
+      return d.material;
+    case LineType::object:
+      return d.object;
+    case LineType::silhouette:
+      break;
   }
   return d.silhouette;
 }
@@ -45,11 +51,11 @@ inline float line_opacity(float mean_coverage) { return std::clamp(kLineGain * m
 // of stencil rays (adaptive line sampling, line_sampling.h).
 struct LineSample {
   std::array<float, kLineTypeCount> coverage{};  // summed weights of the rays that saw a break, per type
-  float weight = 0.f;                // ... of any enabled type
-  float override_weight = 0.f;       // ... where the nearer surface overrides the line colour
-  Color override_color{0.f};         // sum of those override colours, weighted alike
-  float rays = 0.f;                  // stencil rays drawn (the denominator)
-  float hit_rays = 0.f;              // rays that saw a break of any type, unweighted
+  float weight = 0.f;                            // ... of any enabled type
+  float override_weight = 0.f;                   // ... where the nearer surface overrides the line colour
+  Color override_color{0.f};                     // sum of those override colours, weighted alike
+  float rays = 0.f;                              // stencil rays drawn (the denominator)
+  float hit_rays = 0.f;                          // rays that saw a break of any type, unweighted
 };
 
 }  // namespace inkray

@@ -38,7 +38,9 @@ std::optional<Continuation> continue_through(const Material& material, const Sur
                         },
                         [](const EmissiveMaterial&) -> Next { return std::nullopt; },
                         [](const UnlitMaterial&) -> Next { return std::nullopt; },
-                        [&](const TransparentMaterial&) -> Next { return Continuation{-wo, 0.f}; },
+                        [&](const TransparentMaterial&) -> Next {
+                          return Continuation{-wo, 0.f};
+                        },
                         [](const ToonMaterial&) -> Next { return std::nullopt; },
                         // The caller resolves mixes and graphs first.
                         [](const MixMaterial&) -> Next { return std::nullopt; },
@@ -83,7 +85,8 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     if (material_flags(*material).resolves && !(graph && !graph->program->lines_pass_through)) {
       // Lines do not gather light: a graph reading it sees a fully lit surface.
       material = resolve_material(scene.materials, index, scene_shading_point(scene, si, wo, depth), u_mix,
-                                  scratch.emplace()).material;
+                                  scratch.emplace())
+                     .material;
       if (!material) return out;
     }
     out.distance = depth;

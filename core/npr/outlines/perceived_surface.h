@@ -34,8 +34,8 @@ struct PerceivedSurface {
   // The mesh's smooth patch at the crease threshold, or kNoPatch (render_scene.h, crease_patch()).
   uint32_t patch = UINT32_MAX;
   Point3 p{0.f};
-  Normal3 ng{0.f}, ns{0.f};  // facing the arriving ray
-  float distance = 0.f;      // along the whole chain from the camera
+  Normal3 ng{0.f}, ns{0.f};         // facing the arriving ray
+  float distance = 0.f;             // along the whole chain from the camera
   std::optional<Color> line_color;  // a material graph's line colour output here
   float line_width = 1.f;           // and its line width output
 

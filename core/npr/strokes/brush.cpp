@@ -19,7 +19,9 @@ float smoothstep(float e0, float e1, float x) {
   return t * t * (3.f - 2.f * t);
 }
 
-float lattice(uint32_t seed, int64_t i) { return u32_to_unit_float(hash_combine(seed, uint32_t(i), 0x5bd1e995u)); }
+float lattice(uint32_t seed, int64_t i) {
+  return u32_to_unit_float(hash_combine(seed, uint32_t(i), 0x5bd1e995u));
+}
 
 // 1D value noise in [0, 1], smooth (C1) between integer lattice points.
 float value_noise(float x, uint32_t seed) {
@@ -46,7 +48,8 @@ AlphaMask procedural_mask(const StrokeEmitterDesc& e) {
       const int layer = int(row / size_t(mask.height)), y = int(row % size_t(mask.height));
       for (int x = 0; x < mask.width; ++x) {
         const float u = (float(x) + 0.5f) / float(mask.width), v = (float(y) + 0.5f) / float(mask.height);
-        const float a = bristle ? bristle_alpha(u, v, e.bristles, e.pressure, uint32_t(layer)) : flat_alpha(u, v, e.pressure);
+        const float a = bristle ? bristle_alpha(u, v, e.bristles, e.pressure, uint32_t(layer))
+                                : flat_alpha(u, v, e.pressure);
         mask.at(layer, x, y) = to_texel(a);
       }
     }

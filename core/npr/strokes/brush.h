@@ -27,7 +27,7 @@ float flat_alpha(float u, float v, float pressure);
 // axis (left to right) and across its y axis, plus a mirrored variant. Returns
 // null and sets *error when the image cannot be read.
 inline constexpr int kBrushVariants = 8;
-std::shared_ptr<AlphaMask> make_brush_mask(const StrokeEmitterDesc& emitter, const std::filesystem::path& base_dir,
-                                           std::string* error);
+std::shared_ptr<AlphaMask> make_brush_mask(const StrokeEmitterDesc& emitter,
+                                           const std::filesystem::path& base_dir, std::string* error);
 
 }  // namespace inkray

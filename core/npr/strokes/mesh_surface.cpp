@@ -147,13 +147,20 @@ std::vector<uint8_t> boundary_flags(const TriangleMesh& m) {
 
 bool on_boundary(uint8_t flags, Feature f) {
   switch (f) {
-    case Feature::interior: return false;
-    case Feature::vertex_a: return flags & kVertexA;
-    case Feature::vertex_b: return flags & kVertexB;
-    case Feature::vertex_c: return flags & kVertexC;
-    case Feature::edge_ab: return flags & kEdgeAb;
-    case Feature::edge_bc: return flags & kEdgeBc;
-    case Feature::edge_ac: return flags & kEdgeCa;
+    case Feature::interior:
+      return false;
+    case Feature::vertex_a:
+      return flags & kVertexA;
+    case Feature::vertex_b:
+      return flags & kVertexB;
+    case Feature::vertex_c:
+      return flags & kVertexC;
+    case Feature::edge_ab:
+      return flags & kEdgeAb;
+    case Feature::edge_bc:
+      return flags & kEdgeBc;
+    case Feature::edge_ac:
+      return flags & kEdgeCa;
   }
   return false;
 }

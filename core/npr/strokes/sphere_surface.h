@@ -31,8 +31,8 @@ class SphereSurface {
   double area_scale(const glm::dvec3& n_object) const;
 
   Sphere sphere_;
-  glm::dmat3 m_{1.0};          // object -> world, linear part
-  glm::dmat3 normal_m_{1.0};   // inverse transpose, for normals
+  glm::dmat3 m_{1.0};         // object -> world, linear part
+  glm::dmat3 normal_m_{1.0};  // inverse transpose, for normals
   double det_ = 1.0;
   double max_area_scale_ = 1.0;  // bound on area_scale, for rejection sampling
   bool round_ = false;           // the same area scale everywhere: no rejection needed

@@ -16,8 +16,8 @@ Color decode(const Color& c) { return {srgb_to_linear(c.r), srgb_to_linear(c.g),
 
 }  // namespace
 
-Color root_color(std::span<const Material> materials, uint32_t material, const SurfacePoint& root, float mix_u,
-                 const Transform& to_object) {
+Color root_color(std::span<const Material> materials, uint32_t material, const SurfacePoint& root,
+                 float mix_u, const Transform& to_object) {
   SurfaceInteraction si;
   si.p = root.p;
   si.ng = root.ng;
@@ -50,8 +50,9 @@ std::vector<Color> stroke_colors(std::span<const Material> materials, uint32_t m
       // Display-space values above 1 would be clamped by the HSV edit: keep the
       // colour's intensity out of it and put it back afterwards.
       const float scale = std::max(1.f, max_component(base));
-      const Color jittered = jitter_hsv(encode(base / scale), e.hue_jitter * (2.f * u(1) - 1.f),
-                                        e.saturation_jitter * (2.f * u(2) - 1.f), e.value_jitter * (2.f * u(3) - 1.f));
+      const Color jittered =
+          jitter_hsv(encode(base / scale), e.hue_jitter * (2.f * u(1) - 1.f),
+                     e.saturation_jitter * (2.f * u(2) - 1.f), e.value_jitter * (2.f * u(3) - 1.f));
       colors[i] = decode(jittered) * scale;
     }
   });

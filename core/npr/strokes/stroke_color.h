@@ -22,7 +22,7 @@ std::vector<Color> stroke_colors(std::span<const Material> materials, uint32_t m
                                  const Transform& to_object = {});
 
 // The root colour of one stroke before jitter.
-Color root_color(std::span<const Material> materials, uint32_t material, const SurfacePoint& root, float mix_u,
-                 const Transform& to_object = {});
+Color root_color(std::span<const Material> materials, uint32_t material, const SurfacePoint& root,
+                 float mix_u, const Transform& to_object = {});
 
 }  // namespace inkray

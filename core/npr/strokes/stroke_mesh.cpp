@@ -84,8 +84,8 @@ struct Block {
 // One stroke's points across and along before lifting: rails[j * (columns + 1) + c].
 struct Rail {
   SurfacePoint sp;
-  float u = 0.f;      // across the brush; a clipped point keeps the u of the point it collapsed onto
-  float turn = 1.f;   // fade by how far the surface turned away from the centreline's normal
+  float u = 0.f;     // across the brush; a clipped point keeps the u of the point it collapsed onto
+  float turn = 1.f;  // fade by how far the surface turned away from the centreline's normal
   bool clipped = false;
 };
 
@@ -316,14 +316,17 @@ StrokeGeometry build_stroke_mesh(const StrokeSurface& surface, std::span<const S
   const RibbonBuilder builder{surface, emitter, out.offset, seed};
   const size_t blocks = (count + kBlock - 1) / kBlock;
   std::vector<Block> parts(blocks);
-  parallel_for_chunks(blocks, 1, [&](size_t begin, size_t end) {
-    Scratch scratch;
-    for (size_t b = begin; b < end; ++b) {
-      Block& part = parts[b];
-      const size_t last = std::min(count, (b + 1) * kBlock);
-      for (size_t i = b * kBlock; i < last; ++i) builder.build(uint32_t(i), roots[i], scratch, part);
-    }
-  }, cancel);
+  parallel_for_chunks(
+      blocks, 1,
+      [&](size_t begin, size_t end) {
+        Scratch scratch;
+        for (size_t b = begin; b < end; ++b) {
+          Block& part = parts[b];
+          const size_t last = std::min(count, (b + 1) * kBlock);
+          for (size_t i = b * kBlock; i < last; ++i) builder.build(uint32_t(i), roots[i], scratch, part);
+        }
+      },
+      cancel);
   if (cancel.requested()) return out;
 
   // Where each block goes, then every block copied there in parallel.

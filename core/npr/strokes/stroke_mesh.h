@@ -22,10 +22,10 @@ struct StrokeGeometry {
   // along (0 at the tail, 1 at the tip). Normals are the surface's, colours the
   // stroke's.
   TriangleMesh mesh;
-  std::vector<AlphaTriangle> alpha;      // per triangle: brush uv, corner alphas, variant
-  std::vector<uint32_t> first_vertex;    // stroke count + 1 entries
-  float offset = 0.f;    // base lift above the surface
-  float max_lift = 0.f;  // largest lift of any vertex (curvature included)
+  std::vector<AlphaTriangle> alpha;    // per triangle: brush uv, corner alphas, variant
+  std::vector<uint32_t> first_vertex;  // stroke count + 1 entries
+  float offset = 0.f;                  // base lift above the surface
+  float max_lift = 0.f;                // largest lift of any vertex (curvature included)
 };
 
 // How closely a ribbon follows the surface: every part of it stands off the

@@ -38,9 +38,12 @@ class CandidateGrid {
       : inv_cell_(1.f / cell_size) {
     const size_t m = points.size();
     std::vector<Coord> coords(m);
-    parallel_for_chunks(m, 16384, [&](size_t begin, size_t end) {
-      for (size_t i = begin; i < end; ++i) coords[i] = coord_of(points[i]);
-    }, cancel);
+    parallel_for_chunks(
+        m, 16384,
+        [&](size_t begin, size_t end) {
+          for (size_t i = begin; i < end; ++i) coords[i] = coord_of(points[i]);
+        },
+        cancel);
     // Distinct cells in order of first appearance, through a hash table.
     std::vector<Cell> found;
     std::vector<uint32_t> cell_of_candidate(m);
@@ -82,14 +85,17 @@ class CandidateGrid {
     rehash(cells_, slots_.size());
     // The 27 cells around each cell (kNone where there is none).
     around_.resize(27 * cells_.size());
-    parallel_for_chunks(cells_.size(), 1024, [&](size_t begin, size_t end) {
-      for (size_t c = begin; c < end; ++c) {
-        const Coord at = cells_[c].at;
-        for (int k = 0; k < 27; ++k)
-          around_[27 * c + size_t(k)] =
-              find(cells_, {at.x + k / 9 - 1, at.y + k / 3 % 3 - 1, at.z + k % 3 - 1});
-      }
-    }, cancel);
+    parallel_for_chunks(
+        cells_.size(), 1024,
+        [&](size_t begin, size_t end) {
+          for (size_t c = begin; c < end; ++c) {
+            const Coord at = cells_[c].at;
+            for (int k = 0; k < 27; ++k)
+              around_[27 * c + size_t(k)] =
+                  find(cells_, {at.x + k / 9 - 1, at.y + k / 3 % 3 - 1, at.z + k % 3 - 1});
+          }
+        },
+        cancel);
     roots_.resize(m);
   }
 
@@ -200,10 +206,10 @@ class CandidateGrid {
   float inv_cell_;
   std::vector<Cell> cells_;
   uint32_t class_start_[9] = {};
-  std::vector<uint32_t> index_;    // slot -> candidate index
-  std::vector<Point3> position_;   // slot -> candidate position
-  std::vector<Point3> roots_;      // accepted roots, compacted per cell
-  std::vector<uint32_t> around_;   // 27 per cell
+  std::vector<uint32_t> index_;   // slot -> candidate index
+  std::vector<Point3> position_;  // slot -> candidate position
+  std::vector<Point3> roots_;     // accepted roots, compacted per cell
+  std::vector<uint32_t> around_;  // 27 per cell
   std::vector<uint32_t> slots_;
   size_t mask_ = 0;
 };
@@ -216,9 +222,12 @@ std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count
   const uint32_t stream = hash_combine(seed, kPlacementStream);
   const size_t m = candidate_count(count);
   std::vector<Point3> candidates(m);
-  parallel_for_chunks(m, 16384, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) candidates[i] = surface.sample_position(stream, uint32_t(i));
-  }, cancel);
+  parallel_for_chunks(
+      m, 16384,
+      [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) candidates[i] = surface.sample_position(stream, uint32_t(i));
+      },
+      cancel);
   if (cancel.requested()) return {};
 
   const double spacing = std::sqrt(surface.area() / double(count));
@@ -243,25 +252,28 @@ std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count
     for (int c = 0; c < 8 && accepted < count; ++c) {
       const uint32_t first = grid.class_begin(c), cells = grid.class_end(c) - first;
       std::atomic<size_t> added{0};
-      parallel_for_chunks(cells, 64, [&](size_t begin, size_t end) {
-        size_t local = 0;
-        for (size_t j = begin; j < end; ++j) {
-          const uint32_t cell = first + uint32_t(j);
-          for (uint32_t k = grid.begin(cell); k != grid.end(cell); ++k) {
-            if (nearest[k] < r) continue;  // accepted (-1), or a root is known to be closer
-            const float d = grid.nearest(cell, k, r);
-            if (d < r) {
-              nearest[k] = d;
-              continue;
+      parallel_for_chunks(
+          cells, 64,
+          [&](size_t begin, size_t end) {
+            size_t local = 0;
+            for (size_t j = begin; j < end; ++j) {
+              const uint32_t cell = first + uint32_t(j);
+              for (uint32_t k = grid.begin(cell); k != grid.end(cell); ++k) {
+                if (nearest[k] < r) continue;  // accepted (-1), or a root is known to be closer
+                const float d = grid.nearest(cell, k, r);
+                if (d < r) {
+                  nearest[k] = d;
+                  continue;
+                }
+                grid.accept(cell, k);
+                nearest[k] = -1.f;
+                pass_of[k] = pass;
+                ++local;
+              }
             }
-            grid.accept(cell, k);
-            nearest[k] = -1.f;
-            pass_of[k] = pass;
-            ++local;
-          }
-        }
-        added += local;
-      }, cancel);
+            added += local;
+          },
+          cancel);
       if (cancel.requested()) return {};
       accepted += added.load();
     }
@@ -291,9 +303,12 @@ std::vector<SurfacePoint> place_roots(const StrokeSurface& surface, size_t count
   std::sort(taken.begin(), taken.end());
 
   std::vector<SurfacePoint> roots(count);
-  parallel_for_chunks(count, 8192, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) roots[i] = surface.sample(stream, uint32_t(taken[i]));
-  }, cancel);
+  parallel_for_chunks(
+      count, 8192,
+      [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) roots[i] = surface.sample(stream, uint32_t(taken[i]));
+      },
+      cancel);
   if (cancel.requested()) return {};
   if (stats) *stats = {spacing, double(accepted >= count ? r : 0.f), m};
   return roots;

@@ -174,10 +174,12 @@ TEST(StrokePaintLayer, PaintAddedLaterIsOnTopAcrossInstances) {
 TEST(StrokePaintLayer, CameraRaysSeePaintOnlyOnASurface) {
   EmbreeScene scene;
   scene.add(make_quad(Point3(0.f, 0.f, 0.f), {1.f, 0.f, 0.f}, {0.f, 1.f, 0.f}, Transform{}));
-  const std::vector<Point3> p = {{-1.f, 0.f, 0.001f}, {2.f, 0.f, 0.001f}, {-1.f, 1.f, 0.001f}, {2.f, 1.f, 0.001f}};
+  const std::vector<Point3> p = {
+      {-1.f, 0.f, 0.001f}, {2.f, 0.f, 0.001f}, {-1.f, 1.f, 0.001f}, {2.f, 1.f, 0.001f}};
   auto mask = opaque_paint(2);
   auto world = std::make_shared<const Shape>(make_mesh(p, {}, {}, {0, 1, 2, 1, 3, 2}, Transform{}));
-  const uint32_t paint = scene.add(std::make_shared<const ShapeBvh>(world, std::move(mask)), Transform{}, world);
+  const uint32_t paint =
+      scene.add(std::make_shared<const ShapeBvh>(world, std::move(mask)), Transform{}, world);
   scene.commit();
   Hit hit;
   ASSERT_TRUE(scene.intersect(Ray{{0.5f, 0.5f, 1.f}, {0.f, 0.f, -1.f}}, kInfinity, &hit));
@@ -185,7 +187,8 @@ TEST(StrokePaintLayer, CameraRaysSeePaintOnlyOnASurface) {
   EXPECT_NEAR(1.f - hit.t, 0.001f, 1e-6f);
   // Seen at a grazing angle too: the stretch grows with 1 / cos.
   const Vec3 grazing = glm::normalize(Vec3(0.f, 0.95f, -0.05f));
-  ASSERT_TRUE(scene.intersect(Ray{Point3(0.5f, 0.5f, 0.f) - grazing * (0.2f / grazing.y), grazing}, kInfinity, &hit));
+  ASSERT_TRUE(
+      scene.intersect(Ray{Point3(0.5f, 0.5f, 0.f) - grazing * (0.2f / grazing.y), grazing}, kInfinity, &hit));
   EXPECT_EQ(hit.geometry, paint);
   EXPECT_FALSE(scene.intersect(Ray{{1.5f, 0.5f, 1.f}, {0.f, 0.f, -1.f}}, kInfinity, &hit))
       << "beside the surface the paint is a sheet in the air";

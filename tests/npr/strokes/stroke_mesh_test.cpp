@@ -99,15 +99,18 @@ TEST(StrokeMesh, EveryVertexIsAboveTheSphereWithinMaxLift) {
   const StrokeGeometry g = build_test_strokes(surface_of(s), e);
   ASSERT_GT(g.offset, 0.f);
   for (size_t v = 0; v < g.mesh.vertex_count(); ++v) {
-    const double height = glm::length(glm::dvec3(g.mesh.positions[v]) - glm::dvec3(center)) - double(s.radius);
+    const double height =
+        glm::length(glm::dvec3(g.mesh.positions[v]) - glm::dvec3(center)) - double(s.radius);
     ASSERT_GT(height, 0.0) << v;
     ASSERT_LE(height, double(g.max_lift) * 1.001) << v;
   }
   // Every triangle's centroid too: the lift covers the chords, not just the vertices.
   const auto& m = g.mesh;
   for (size_t t = 0; t < m.triangle_count(); ++t) {
-    const glm::dvec3 c = (glm::dvec3(m.positions[m.indices[3 * t]]) + glm::dvec3(m.positions[m.indices[3 * t + 1]]) +
-                          glm::dvec3(m.positions[m.indices[3 * t + 2]])) / 3.0;
+    const glm::dvec3 c =
+        (glm::dvec3(m.positions[m.indices[3 * t]]) + glm::dvec3(m.positions[m.indices[3 * t + 1]]) +
+         glm::dvec3(m.positions[m.indices[3 * t + 2]])) /
+        3.0;
     ASSERT_GT(glm::length(c - glm::dvec3(center)), double(s.radius)) << t;
   }
 }

@@ -64,12 +64,14 @@ TEST(StrokePlacement, RootsLieOnTheSphere) {
 }
 
 TEST(StrokePlacement, RootsLieOnTheirMeshTriangle) {
-  const Shape ellipsoid = make_uv_sphere(Point3(1.f, 2.f, -1.f), 0.8f, 24, 48, Transform::scale({1.f, 0.6f, 1.3f}));
+  const Shape ellipsoid =
+      make_uv_sphere(Point3(1.f, 2.f, -1.f), 0.8f, 24, 48, Transform::scale({1.f, 0.6f, 1.3f}));
   const auto& mesh = std::get<TriangleMesh>(ellipsoid);
   const StrokeSurface surface = surface_of(ellipsoid);
   for (const SurfacePoint& r : place_roots(surface, 4000, 2)) {
     ASSERT_LT(r.prim, mesh.triangle_count());
-    const Point3 a = mesh.positions[mesh.indices[3 * r.prim]], b = mesh.positions[mesh.indices[3 * r.prim + 1]],
+    const Point3 a = mesh.positions[mesh.indices[3 * r.prim]],
+                 b = mesh.positions[mesh.indices[3 * r.prim + 1]],
                  c = mesh.positions[mesh.indices[3 * r.prim + 2]];
     const Vec3 n = glm::normalize(glm::cross(b - a, c - a));
     const float size = std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});

@@ -55,7 +55,8 @@ TEST(StrokeScenes, EmitterErrorsNameTheEmitter) {
   EXPECT_FALSE(c.scene);
   ASSERT_FALSE(c.errors.empty());
   // The JSON path names the emitter (compile_scene checks the document first).
-  EXPECT_NE(c.errors.front().find("strokes[0].brush_image: file not found: no_such_brush.png"), std::string::npos)
+  EXPECT_NE(c.errors.front().find("strokes[0].brush_image: file not found: no_such_brush.png"),
+            std::string::npos)
       << c.errors.front();
 }
 
@@ -65,7 +66,8 @@ TEST(StrokeScenes, HiddenObjectGrowsNoStrokes) {
     if (o.name == d.strokes[0].object) o.visible = false;
   CompileResult c = compile_scene(d);
   ASSERT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
-  for (uint32_t i = 0; i < c.scene->geometry.shape_count(); ++i) EXPECT_FALSE(c.scene->geometry.alpha_mask(i));
+  for (uint32_t i = 0; i < c.scene->geometry.shape_count(); ++i)
+    EXPECT_FALSE(c.scene->geometry.alpha_mask(i));
 }
 
 }  // namespace
