@@ -1,7 +1,7 @@
 #include "app/edit_measurement.h"
 
 #include "core/image/image_io.h"
-#include "ui/camera_controller.h"
+#include "ui/viewport/camera_controller.h"
 
 #include <algorithm>
 #include <cmath>

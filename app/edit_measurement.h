@@ -4,7 +4,7 @@
 #pragma once
 
 #include "ui/editor_app.h"
-#include "ui/gizmo.h"
+#include "ui/viewport/gizmo.h"
 
 #include <array>
 #include <chrono>
@@ -22,7 +22,7 @@ using Clock = std::chrono::steady_clock;
 // What --measure-edits changes: each a small step, as one frame of a slider drag makes.
 // `node` is a value on a node of the first material graph an object uses. `gizmo-drag`
 // drags the first object's translate gizmo along an axis, a step every frame, through
-// the gizmo's drag maths (ui/gizmo.h) and the same undoable edit as the mouse makes.
+// the gizmo's drag maths (ui/viewport/gizmo.h) and the same undoable edit as the mouse makes.
 enum class EditKind {
   camera,
   material,

@@ -9,10 +9,10 @@
 #include "core/document/json_io.h"
 #include "core/image/image_io.h"
 #include "core/io/atomic_file.h"
-#include "ui/camera_controller.h"
+#include "ui/viewport/camera_controller.h"
 #include "ui/editor_app.h"
-#include "ui/fonts.h"
-#include "ui/widget_report.h"
+#include "ui/widgets/fonts.h"
+#include "ui/widgets/widget_report.h"
 
 #include <GLFW/glfw3.h>
 #include <GL/gl.h>
@@ -244,7 +244,7 @@ int main(int argc, char** argv) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // panel sizes are the editor's own settings (ui/ui_settings.h)
+  io.IniFilename = nullptr;  // panel sizes are the editor's own settings (ui/model/ui_settings.h)
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 

@@ -1,15 +1,15 @@
 #include "ui/editor_app.h"
 
 #include "core/document/animation.h"
-#include "ui/app_paths.h"
-#include "ui/camera_controller.h"
-#include "ui/file_drop.h"
-#include "ui/log_panel.h"
-#include "ui/properties_panel.h"
-#include "ui/render_panel.h"
-#include "ui/scene_edits.h"
-#include "ui/scene_graph_panel.h"
-#include "ui/widget_report.h"
+#include "ui/model/app_paths.h"
+#include "ui/viewport/camera_controller.h"
+#include "ui/model/file_drop.h"
+#include "ui/panels/log_panel.h"
+#include "ui/panels/properties_panel.h"
+#include "ui/panels/render_panel.h"
+#include "ui/model/scene_edits.h"
+#include "ui/panels/scene_graph_panel.h"
+#include "ui/widgets/widget_report.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>

@@ -4,19 +4,19 @@
 // this draws one ImGui frame at a time.
 #pragma once
 
-#include "ui/autosave.h"
-#include "ui/editor_state.h"
-#include "ui/export_dialog.h"
-#include "ui/file_dialog.h"
-#include "ui/help_window.h"
-#include "ui/material_swatches.h"
-#include "ui/missing_assets_panel.h"
-#include "ui/node_editor_panel.h"
-#include "ui/recent_files.h"
-#include "ui/scene_loader.h"
-#include "ui/timeline_panel.h"
-#include "ui/ui_settings.h"
-#include "ui/viewport_panel.h"
+#include "ui/model/autosave.h"
+#include "ui/model/editor_state.h"
+#include "ui/panels/export_dialog.h"
+#include "ui/widgets/file_dialog.h"
+#include "ui/panels/help_window.h"
+#include "ui/widgets/material_swatches.h"
+#include "ui/panels/missing_assets_panel.h"
+#include "ui/nodes/node_editor_panel.h"
+#include "ui/model/recent_files.h"
+#include "ui/model/scene_loader.h"
+#include "ui/panels/timeline_panel.h"
+#include "ui/model/ui_settings.h"
+#include "ui/viewport/viewport_panel.h"
 
 #include <chrono>
 #include <filesystem>
@@ -54,7 +54,7 @@ class EditorApp {
     renderer_.wait_for_generation(viewport_->uploaded_generation(), until);
   }
 
-  // Files dropped on the window, handled at the next frame (ui/file_drop.h).
+  // Files dropped on the window, handled at the next frame (ui/model/file_drop.h).
   void drop(std::vector<std::filesystem::path> files);
   // The monitor's content scale (GLFW); the UI scale is it times the user's setting.
   void set_content_scale(float scale) { content_scale_ = scale; }

@@ -1,5 +1,5 @@
 // The node editor's edits (core/document/graph_edit.h, and parameter values set the way
-// ui/param_widgets.cpp sets them) driven by a stream of bytes, and what every graph they
+// ui/widgets/param_widgets.cpp sets them) driven by a stream of bytes, and what every graph they
 // make must satisfy when compiled. Shared by the random-edit test
 // (tests/compiler/graph_edits_test.cpp) and the graph_compile fuzzer.
 #pragma once

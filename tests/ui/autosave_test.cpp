@@ -1,6 +1,6 @@
 // The recovery file's origin note is replaced atomically like the recovery file itself,
 // reports why it failed, and temporaries a killed editor left are removed at start-up.
-#include "ui/autosave.h"
+#include "ui/model/autosave.h"
 
 #include "support/file_helpers.h"
 

@@ -1,5 +1,5 @@
 // Viewport navigation maths: orbit, pan, dolly, framing, focus.
-#include "ui/camera_controller.h"
+#include "ui/viewport/camera_controller.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Undo/redo over the document: apply, undo, redo, merging drags, dirty state.
-#include "ui/command_stack.h"
-#include "ui/document.h"
-#include "ui/scene_edits.h"
+#include "ui/model/command_stack.h"
+#include "ui/model/document.h"
+#include "ui/model/scene_edits.h"
 
 #include <gtest/gtest.h>
 

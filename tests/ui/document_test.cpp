@@ -2,8 +2,8 @@
 // interrupted save (the process killed mid-write) leaves the old file intact.
 #include "core/document/asset_paths.h"
 #include "core/document/json_io.h"
-#include "ui/autosave.h"
-#include "ui/document.h"
+#include "ui/model/autosave.h"
+#include "ui/model/document.h"
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 // for editing, with the reasons as warnings.
 #include "core/document/json_io.h"
 #include "core/document/tagged_variant.h"
-#include "ui/autosave.h"
-#include "ui/document.h"
-#include "ui/scene_edits.h"
+#include "ui/model/autosave.h"
+#include "ui/model/document.h"
+#include "ui/model/scene_edits.h"
 
 #include "tests/support/messages.h"
 

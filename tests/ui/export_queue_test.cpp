@@ -2,7 +2,7 @@
 // at a time in the order they were added, a cancelled one writes nothing and a queued
 // one never starts; the dialog's form names a wrong extension, a missing folder and
 // the files Start would replace.
-#include "ui/export_queue.h"
+#include "ui/model/export_queue.h"
 
 #include "core/document/json_io.h"
 #include "support/file_helpers.h"

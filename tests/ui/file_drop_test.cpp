@@ -1,7 +1,7 @@
 // Dropped files: kinds by extension, and images landing on what the selection can take.
-#include "ui/document.h"
-#include "ui/file_drop.h"
-#include "ui/scene_edits.h"
+#include "ui/model/document.h"
+#include "ui/model/file_drop.h"
+#include "ui/model/scene_edits.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The gizmo's maths: picking handles from points on screen, and what axis, plane, ring
 // and scale drags do to a transform, with a known camera.
-#include "ui/gizmo.h"
+#include "ui/viewport/gizmo.h"
 #include "core/compiler/compile_objects.h"
 
 #include <gtest/gtest.h>

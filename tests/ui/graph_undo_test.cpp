@@ -5,7 +5,7 @@
 #include "core/document/json_io.h"
 #include "core/document/stage_diff.h"
 #include "support/render_helpers.h"
-#include "ui/document.h"
+#include "ui/model/document.h"
 
 #include <gtest/gtest.h>
 

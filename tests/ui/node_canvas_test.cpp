@@ -1,6 +1,6 @@
 // The node editor's canvas maths: view transforms, node geometry, hit testing and
 // the selection rules, without a window.
-#include "ui/node_canvas.h"
+#include "ui/nodes/node_canvas.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 // within 2 pixels. INKRAY_UPDATE_REFERENCES=1 rewrites that layout instead.
 #include "core/document/json_io.h"
 #include "core/image/image_io.h"
-#include "ui/node_canvas.h"
+#include "ui/nodes/node_canvas.h"
 
 #include "tests/support/editor_run.h"
 

@@ -1,8 +1,8 @@
 // The panel layout over window sizes from 1024x700 to 3840x2160 and UI scales 1 to 2:
 // panels tile the window without overlap or gaps, keep their minimums, and a drag of a
 // shared edge moves exactly that edge.
-#include "ui/panel_layout.h"
-#include "ui/ui_settings.h"
+#include "ui/model/panel_layout.h"
+#include "ui/model/ui_settings.h"
 
 #include <gtest/gtest.h>
 

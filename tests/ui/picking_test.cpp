@@ -1,7 +1,7 @@
 // Picking: a ray through the compiled scene finds the object under a pixel.
 #include "core/compiler/compile.h"
-#include "ui/picking.h"
-#include "ui/scene_edits.h"
+#include "ui/viewport/picking.h"
+#include "ui/model/scene_edits.h"
 
 #include <gtest/gtest.h>
 

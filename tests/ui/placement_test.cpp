@@ -1,11 +1,11 @@
 // New objects land in front of the camera, inside the view, sized to it and beside
 // what is already there; an imported mesh is fitted to the view from its bounds.
-#include "ui/placement.h"
+#include "ui/model/placement.h"
 #include "core/camera/camera.h"
 #include "core/compiler/compile_objects.h"
 #include "support/file_helpers.h"
-#include "ui/document.h"
-#include "ui/scene_edits.h"
+#include "ui/model/document.h"
+#include "ui/model/scene_edits.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Structural edits keep names unique and references consistent.
-#include "ui/document.h"
-#include "ui/scene_edits.h"
+#include "ui/model/document.h"
+#include "ui/model/scene_edits.h"
 
 #include <gtest/gtest.h>
 

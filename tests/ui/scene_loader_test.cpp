@@ -1,6 +1,6 @@
 // Opening in the background: a read can be cancelled, a newer open replaces an older
 // one, and a finished read is handed over once.
-#include "ui/scene_loader.h"
+#include "ui/model/scene_loader.h"
 
 #include "tests/support/file_helpers.h"
 

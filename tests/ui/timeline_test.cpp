@@ -4,9 +4,9 @@
 // playback clock.
 #include "core/document/animation.h"
 #include "core/document/graph_edit.h"
-#include "ui/document.h"
-#include "ui/scene_edits.h"
-#include "ui/timeline_panel.h"
+#include "ui/model/document.h"
+#include "ui/model/scene_edits.h"
+#include "ui/panels/timeline_panel.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Blender's G/R/S as a state machine: keys, typed values, axis constraints, snapping,
 // confirm and cancel, with no window.
-#include "ui/transform_tool.h"
+#include "ui/viewport/transform_tool.h"
 #include "core/compiler/compile_objects.h"
 
 #include <gtest/gtest.h>

@@ -1,0 +1,57 @@
+#include "ui/model/selection.h"
+
+namespace inkray {
+namespace {
+
+template <class T>
+bool in_range(const std::vector<T>& items, int index) {
+  return index >= 0 && index < int(items.size());
+}
+
+}  // namespace
+
+bool is_valid(const SceneDesc& scene, const Selection& s) {
+  switch (s.kind) {
+    case ItemKind::object:
+      return in_range(scene.objects, s.index);
+    case ItemKind::light:
+      return in_range(scene.lights, s.index);
+    case ItemKind::material:
+      return in_range(scene.materials, s.index);
+    case ItemKind::emitter:
+      return in_range(scene.strokes, s.index);
+    default:
+      return true;
+  }
+}
+
+Selection validated(const SceneDesc& scene, const Selection& s) {
+  return is_valid(scene, s) ? s : Selection{};
+}
+
+std::string item_name(const SceneDesc& scene, const Selection& s) {
+  if (!is_valid(scene, s)) return {};
+  switch (s.kind) {
+    case ItemKind::none:
+      return {};
+    case ItemKind::camera:
+      return "Camera";
+    case ItemKind::render:
+      return "Render settings";
+    case ItemKind::environment:
+      return "Environment";
+    case ItemKind::outlines:
+      return "Outlines";
+    case ItemKind::object:
+      return scene.objects[size_t(s.index)].name;
+    case ItemKind::light:
+      return scene.lights[size_t(s.index)].name;
+    case ItemKind::material:
+      return scene.materials[size_t(s.index)].name;
+    case ItemKind::emitter:
+      return scene.strokes[size_t(s.index)].name;
+  }
+  return {};
+}
+
+}  // namespace inkray

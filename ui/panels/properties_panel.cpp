@@ -1,0 +1,401 @@
+#include "ui/panels/properties_panel.h"
+
+#include "core/document/graph_edit.h"
+#include "core/document/edit_checks.h"
+#include "core/document/param_text.h"
+#include "ui/widgets/key_actions.h"
+#include "ui/widgets/param_widgets.h"
+#include "ui/model/scene_edits.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace inkray {
+namespace {
+
+// ImGui 1.86 has no SeparatorText.
+void section_title(const char* title) {
+  ImGui::Spacing();
+  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.f, 1.f), "%s", title);
+  ImGui::Separator();
+}
+
+std::string merge_key(const Selection& s, const std::string& param) {
+  return std::to_string(int(s.kind)) + ":" + std::to_string(s.index) + ":" + param;
+}
+
+// What the panel's widgets share while it is drawn: the editor's state, the document
+// at the current frame (the values shown), and the keys the fields ask for.
+struct Panel {
+  EditorState& state;
+  const SceneDesc& shown;
+  KeyTargets keys;
+};
+
+// The widgets' context for one item: the scene's names and folder, that item's last
+// problem, shown beside its field, and the item's keys (`group` sits between the
+// item's path and its parameters': "transform", "lines").
+ParamWidgets widgets_for(Panel& panel, const Selection& item, std::string_view group = {},
+                         std::string_view self_name = {}) {
+  const EditorState& state = panel.state;
+  ParamWidgets widgets;
+  widgets.scene = &state.document.scene();
+  widgets.self_name = self_name;
+  if (state.problem_item == item) {
+    widgets.problem_param = state.problem_param;
+    widgets.problem_message = state.problem_message;
+  }
+  widgets.keys = &panel.keys;
+  widgets.key_item = item;
+  widgets.key_group = group;
+  return widgets;
+}
+
+// The problem of a field drawn here rather than by the generated widgets.
+void problem_beside(const EditorState& state, const Selection& item, std::string_view param) {
+  if (state.problem_item != item || state.problem_param != param || state.problem_message.empty()) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.35f, 0.3f, 1.f));
+  ImGui::PushTextWrapPos(0.f);
+  ImGui::TextUnformatted(state.problem_message.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
+}
+
+// What the generated widgets of one struct changed.
+struct Edited {
+  bool changed = false;
+  bool typed = false;  // typed text: a name or a path
+  std::string param;
+  Edited& operator|=(const Edited& later) {
+    if (later.changed) *this = later;
+    return *this;
+  }
+};
+
+template <class Desc>
+Edited edit_item(Desc& desc, ParamWidgets widgets) {
+  visit_params(desc, widgets);
+  return {widgets.changed, widgets.changed_typed, widgets.changed_param};
+}
+
+// A tagged variant's type combo and its alternative's widgets.
+template <class Variant>
+Edited edit_tagged_item(Panel& panel, const Selection& sel, const char* label, Variant& value,
+                        std::string_view group = {}) {
+  Edited edited;
+  if (edit_variant_type(label, value)) edited = {true, false, "type"};
+  problem_beside(panel.state, sel, "type");
+  std::visit([&](auto& alternative) { edited |= edit_item(alternative, widgets_for(panel, sel, group)); },
+             value);
+  return edited;
+}
+
+void set_problem(EditorState& state, const Selection& item, const std::string& param, std::string message) {
+  state.problem_item = item;
+  state.problem_param = param;
+  state.problem_message = std::move(message);
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += (text.empty() ? "" : "\n") + line;
+  return text;
+}
+
+// Every edit of the panel ends here. One that would make the scene unrenderable is
+// refused, with the reason beside its field; typed text (a name, a path) is kept,
+// since typing passes through such states, and the reason shows until it is mended.
+void commit(EditorState& state, const Selection& item, SceneDesc after, const std::string& param,
+            bool typed) {
+  const std::vector<std::string> added = problems_added(state.document.scene(), after);
+  if (!added.empty() && !typed) {
+    set_problem(state, item, param, "Not applied: " + joined(added));
+    return;
+  }
+  if (added.empty()) {
+    if (state.problem_item == item) set_problem(state, {}, {}, {});
+  } else {
+    set_problem(state, item, param, joined(added));
+  }
+  state.edit(std::move(after), "Edit " + param, merge_key(item, param));
+}
+
+// The document with an edited copy of a named item. A changed name is applied with
+// rename_item so references to it follow; an empty or taken name keeps the old one.
+template <class T>
+std::optional<SceneDesc> with_named(EditorState& state, const Selection& sel, std::vector<T> SceneDesc::*list,
+                                    T edited, const std::string& param) {
+  SceneDesc scene = state.document.scene();
+  const std::string old_name = (scene.*list)[size_t(sel.index)].name;
+  if (edited.name != old_name) {
+    if (!rename_item(scene, sel, edited.name)) {
+      set_problem(state, sel, param,
+                  edited.name.empty() ? "Not applied: a name cannot be empty"
+                                      : "Not applied: the name " + in_quotes(edited.name) + " is taken");
+      return std::nullopt;
+    }
+    // Renaming rewrites references inside the edited item too (a material's own mix inputs).
+    edited.name = (scene.*list)[size_t(sel.index)].name;
+  }
+  if constexpr (std::is_same_v<T, ObjectDesc>) {
+    edited.name = (scene.*list)[size_t(sel.index)].name;
+  }
+  (scene.*list)[size_t(sel.index)] = std::move(edited);
+  return scene;
+}
+
+template <class T>
+void commit_named(EditorState& state, const Selection& sel, std::vector<T> SceneDesc::*list, T edited,
+                  const std::string& param, bool typed) {
+  if (auto scene = with_named(state, sel, list, std::move(edited), param))
+    commit(state, sel, std::move(*scene), param, typed);
+}
+
+// A name field: typed text, its problem beside it.
+bool edit_name(Panel& panel, const Selection& sel, std::string& name, std::string_view doc) {
+  ParamWidgets widgets = widgets_for(panel, sel);
+  widgets(text("name", doc), name);
+  return widgets.changed;
+}
+
+// The material's type and settings; a graph's nodes are the node editor's.
+Edited edit_material_data(Panel& panel, const Selection& sel, MaterialDesc& m) {
+  EditorState& state = panel.state;
+  const MaterialVariant before = m.data;
+  Edited edited;
+  if (edit_variant_type("Type###type", m.data)) edited = {true, false, "type"};
+  problem_beside(state, sel, "type");
+  // Turning a material into a graph keeps its look: it becomes that material's closure node.
+  if (edited.changed && std::holds_alternative<GraphDesc>(m.data)) m.data = graph_from_material(before);
+  std::visit(
+      [&]<class T>(T& data) {
+        if constexpr (std::is_same_v<T, GraphDesc>) {
+          ImGui::TextDisabled("%zu nodes, %zu links", data.nodes.size(), data.links.size());
+        } else {
+          // A mix offers the other materials: one of itself would be a cycle.
+          edited |= edit_item(data, widgets_for(panel, sel, {}, m.name));
+        }
+      },
+      m.data);
+  if (ImGui::Button("Edit nodes")) state.want_node_editor = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Open the node editor on this material (a plain one becomes a graph at the first edit)");
+  return edited;
+}
+
+// Scale with a lock: locked, editing one component scales all three alike (param_text.h).
+bool edit_scale(Panel& panel, const Selection& sel, Vec3& scale, std::string* param) {
+  static constexpr Param kScale =
+      vector("scale", "Scale along the object's own axes, applied first").labelled("Scale");
+  EditorState& state = panel.state;
+  Vec3 edited = scale;
+  ParamWidgets widgets = widgets_for(panel, sel, "transform");
+  widgets(kScale, edited);
+  ImGui::Checkbox("Uniform scale", &state.uniform_scale);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Locked: editing one component scales all three proportionally");
+  if (!widgets.changed) return false;
+  if (state.uniform_scale) edited = locked_scale(scale, edited);
+  // No zero factor: the reader refuses it, and a flat object cannot be scaled back.
+  if (edited.x == 0.f || edited.y == 0.f || edited.z == 0.f || edited == scale) return false;
+  for (int i = 0; i < 3; ++i)
+    edited[i] = std::clamp(edited[i], -float(kMaxCoordinate), float(kMaxCoordinate));
+  scale = edited;
+  *param = "scale";
+  return true;
+}
+
+bool edit_transform(Panel& panel, const Selection& sel, TransformDesc& t, std::string* param) {
+  static constexpr Param kTranslate =
+      vector("translate", "Moves the object, applied last").labelled("Position");
+  ParamWidgets translate = widgets_for(panel, sel, "transform");
+  translate(kTranslate, t.translate);
+  bool changed = translate.changed;
+  if (changed) *param = "translate";
+  changed |= edit_scale(panel, sel, t.scale, param);
+  for (size_t i = 0; i < t.rotate.size(); ++i) {
+    ImGui::PushID(int(i));
+    std::string rotation_param;
+    if (edit_params(t.rotate[i], &rotation_param,
+                    widgets_for(panel, sel, "transform.rotate." + std::to_string(i))))
+      changed = true, *param = "rotate" + std::to_string(i) + rotation_param;
+    if (ImGui::SmallButton("remove rotation")) {
+      t.rotate.erase(t.rotate.begin() + long(i));
+      changed = true, *param = "rotate-remove";
+      ImGui::PopID();
+      break;
+    }
+    ImGui::PopID();
+  }
+  if (ImGui::SmallButton("+ rotation")) t.rotate.push_back({}), changed = true, *param = "rotate-add";
+  return changed;
+}
+
+void material_section(Panel& panel, int index) {
+  EditorState& state = panel.state;
+  const Selection sel{ItemKind::material, index};
+  MaterialDesc m = panel.shown.materials[size_t(index)];
+  ImGui::PushID("material");
+  Edited edited;
+  if (edit_name(panel, sel, m.name, "Unique material name")) edited = {true, true, "name"};
+  edited |= edit_material_data(panel, sel, m);
+  if (ImGui::TreeNode("Outline overrides")) {
+    edited |= edit_item(m.lines, widgets_for(panel, sel, "lines"));
+    ImGui::TreePop();
+  }
+  ImGui::PopID();
+  if (!edited.changed) return;
+  std::optional<SceneDesc> scene = with_named(state, sel, &SceneDesc::materials, std::move(m), edited.param);
+  if (!scene) return;
+  // A new mix needs two inputs to be valid at once: it gets them (param_text.h).
+  if (edited.param == "type") give_mix_inputs(*scene, size_t(index));
+  commit(state, sel, std::move(*scene), edited.param, edited.typed);
+}
+
+// The object's own parameters but its outline overrides, which come last.
+struct WithoutGroups {
+  ParamWidgets& widgets;
+  template <class F>
+  void operator()(const Param& p, F& field) {
+    if (p.kind != ParamKind::group) widgets(p, field);
+  }
+};
+
+void object_section(Panel& panel, int index) {
+  EditorState& state = panel.state;
+  const SceneDesc& scene = panel.shown;
+  const Selection sel{ItemKind::object, index};
+  ObjectDesc o = scene.objects[size_t(index)];
+  ParamWidgets own = widgets_for(panel, sel);
+  WithoutGroups top{own};
+  visit_params(o, top);
+  Edited edited{own.changed, own.changed_typed, own.changed_param};
+  section_title("Transform");
+  std::string transform_param;
+  if (edit_transform(panel, sel, o.transform, &transform_param)) edited = {true, false, transform_param};
+  section_title("Shape");
+  edited |= edit_tagged_item(panel, sel, "Shape###shape", o.shape, "shape");
+  if (ImGui::TreeNode("Outline overrides")) {
+    edited |= edit_item(o.lines, widgets_for(panel, sel, "lines"));
+    ImGui::TreePop();
+  }
+  if (edited.changed) {
+    commit_named(state, sel, &SceneDesc::objects, std::move(o), edited.param, edited.typed);
+    return;
+  }
+  // The object's material, so the look can be tuned without leaving the object.
+  for (int m = 0; m < int(scene.materials.size()); ++m) {
+    if (scene.materials[size_t(m)].name == scene.objects[size_t(index)].material) {
+      section_title(("Material: " + scene.materials[size_t(m)].name).c_str());
+      material_section(panel, m);
+      break;
+    }
+  }
+  for (int e = 0; e < int(scene.strokes.size()); ++e) {
+    if (scene.strokes[size_t(e)].object != scene.objects[size_t(index)].name) continue;
+    ImGui::PushID(e);
+    section_title(("Strokes: " + scene.strokes[size_t(e)].name).c_str());
+    const Selection emitter_sel{ItemKind::emitter, e};
+    StrokeEmitterDesc emitter = scene.strokes[size_t(e)];
+    ParamWidgets widgets = widgets_for(panel, emitter_sel);
+    visit_params(emitter, widgets);
+    if (widgets.changed) {
+      commit_named(state, emitter_sel, &SceneDesc::strokes, std::move(emitter), widgets.changed_param,
+                   widgets.changed_typed);
+      ImGui::PopID();
+      return;
+    }
+    ImGui::PopID();
+  }
+}
+
+// Singletons (camera, render settings, outlines, environment) have no name to keep consistent.
+template <class T>
+void singleton_section(Panel& panel, ItemKind kind, T SceneDesc::*member) {
+  EditorState& state = panel.state;
+  const Selection sel{kind, -1};
+  T value = panel.shown.*member;
+  Edited edited;
+  if constexpr (requires { std::variant_size<T>::value; }) {
+    edited = edit_tagged_item(panel, sel, "Type###type", value);
+  } else {
+    edited = edit_item(value, widgets_for(panel, sel));
+  }
+  if (edited.changed) {
+    SceneDesc scene = state.document.scene();
+    scene.*member = std::move(value);
+    commit(state, sel, std::move(scene), edited.param, edited.typed);
+  }
+}
+
+}  // namespace
+
+void draw_properties_panel(EditorState& state) {
+  Panel panel{state, state.shown(), {}};
+  panel.keys.document = &state.document.scene();
+  panel.keys.report = state.report_params;
+  const SceneDesc& scene = panel.shown;
+  const Selection sel = validated(scene, state.selection);
+  if (sel.kind == ItemKind::none) {
+    ImGui::TextDisabled("Select an item in the scene graph or click the viewport.");
+    return;
+  }
+  ImGui::Text("%s", item_name(scene, sel).c_str());
+  if (!scene.animation.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("at frame %g", double(scene.render.frame));
+  }
+  ImGui::Separator();
+  // Room for the longest labels ("Specular colour") at any interface size.
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.f);
+  switch (sel.kind) {
+    case ItemKind::camera:
+      singleton_section(panel, sel.kind, &SceneDesc::camera);
+      break;
+    case ItemKind::render:
+      singleton_section(panel, sel.kind, &SceneDesc::render);
+      break;
+    case ItemKind::outlines:
+      singleton_section(panel, sel.kind, &SceneDesc::outlines);
+      break;
+    case ItemKind::environment:
+      singleton_section(panel, sel.kind, &SceneDesc::environment);
+      break;
+    case ItemKind::object:
+      object_section(panel, sel.index);
+      break;
+    case ItemKind::material:
+      material_section(panel, sel.index);
+      break;
+    case ItemKind::light: {
+      LightDesc light = scene.lights[size_t(sel.index)];
+      Edited edited;
+      if (edit_name(panel, sel, light.name, "Light name")) edited = {true, true, "name"};
+      edited |= edit_tagged_item(panel, sel, "Type###type", light.data);
+      if (edited.changed)
+        commit_named(state, sel, &SceneDesc::lights, std::move(light), edited.param, edited.typed);
+      break;
+    }
+    case ItemKind::emitter: {
+      StrokeEmitterDesc emitter = scene.strokes[size_t(sel.index)];
+      ParamWidgets widgets = widgets_for(panel, sel);
+      visit_params(emitter, widgets);
+      if (widgets.changed)
+        commit_named(state, sel, &SceneDesc::strokes, std::move(emitter), widgets.changed_param,
+                     widgets.changed_typed);
+      break;
+    }
+    case ItemKind::none:
+      break;
+  }
+  ImGui::PopItemWidth();
+  apply_key_actions(state, panel.keys);
+}
+
+}  // namespace inkray
