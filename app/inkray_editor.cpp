@@ -1,18 +1,15 @@
 // inkray: the editor. GLFW window, OpenGL 3.3 core, Dear ImGui; everything
-// else is EditorApp (ui/). Headless runs for tests and measurements:
+// else is EditorApp (ui/), and what tests and measurements add is ScriptedRun
+// (app/scripted_run.h). Headless runs for tests and measurements:
 //   inkray --screenshot OUT.png --frames N [--window-size W H] [--widget-report OUT.txt]
 //          [--node-editor MATERIAL --node-layout OUT.txt] [--drop FILE] [SCENE.json]
 //   inkray --measure-edits N [--edit KIND,...] [SCENE.json]   (edit latency, frame
 //   times and samples kept, per kind of edit)
 #include "app/cli_numbers.h"
 #include "app/edit_measurement.h"
-#include "core/document/json_io.h"
-#include "core/image/image_io.h"
-#include "core/io/atomic_file.h"
-#include "ui/viewport/camera_controller.h"
+#include "app/scripted_run.h"
 #include "ui/editor_app.h"
 #include "ui/widgets/fonts.h"
-#include "ui/widgets/widget_report.h"
 
 #include <GLFW/glfw3.h>
 #include <GL/gl.h>
@@ -21,37 +18,24 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
 #include <string>
 #include <string_view>
 #include <thread>
-#include <type_traits>
 #include <vector>
 
 namespace {
 
 struct Options {
   std::string scene;
-  std::string screenshot;
-  int frames = 0;  // 0: run until closed
-  int measure_edits = 0;
-  std::vector<inkray::measure::EditKind> edit_kinds;  // empty: camera
   int threads = 0;
   int width = 1600, height = 900;
-  std::string select;              // object to select at start, so screenshots show the highlight
-  std::string node_material;       // material to open the node editor on
-  std::string node_layout;         // where to write the node editor's layout with the screenshot
-  std::string widget_report;       // where to write the named widgets' rectangles with the screenshot
-  std::vector<std::string> drops;  // files handed to the drop callback after the first frame
-  std::string scene_dump;          // where to write the document (JSON) with the screenshot
-  std::string input_script;        // keys and mouse moves to play, one a line (ui/editor_app.h)
-  std::string export_path;         // export through the dialog to this file, then take the screenshot
-  float ui_scale = 0.f;            // overrides the saved interface size when set
+  std::string input_script;  // keys and mouse moves to play, one a line (ui/editor_app.h)
+  float ui_scale = 0.f;      // overrides the saved interface size when set
+  inkray::ScriptOptions script;
 };
 
 // GLFW's drop callback has no user pointer of its own: the window's points at the app.
@@ -111,11 +95,11 @@ bool parse(int argc, char** argv, Options* o) {
       usage();
       std::exit(0);
     } else if (a == "--screenshot" && (v = value())) {
-      o->screenshot = v;
+      o->script.screenshot = v;
     } else if (a == "--frames" && (v = value())) {
-      if (!number("--frames", v, 0, 1000000, &o->frames)) return false;
+      if (!number("--frames", v, 0, 1000000, &o->script.frames)) return false;
     } else if (a == "--measure-edits" && (v = value())) {
-      if (!number("--measure-edits", v, 1, 100000, &o->measure_edits)) return false;
+      if (!number("--measure-edits", v, 1, 100000, &o->script.measure_edits)) return false;
     } else if (a == "--edit" && (v = value())) {
       const std::string list = v;
       for (size_t begin = 0; begin <= list.size();) {
@@ -128,17 +112,18 @@ bool parse(int argc, char** argv, Options* o) {
                        inkray::measure::edit_kind_list().c_str());
           std::exit(2);
         }
-        o->edit_kinds.push_back(inkray::measure::EditKind(found - inkray::measure::kEditKindNames.begin()));
+        o->script.edit_kinds.push_back(
+            inkray::measure::EditKind(found - inkray::measure::kEditKindNames.begin()));
         begin = end + 1;
       }
     } else if (a == "--threads" && (v = value())) {
       if (!number("--threads", v, 1, 1024, &o->threads)) return false;
     } else if (a == "--select" && (v = value())) {
-      o->select = v;
+      o->script.select = v;
     } else if (a == "--node-editor" && (v = value())) {
-      o->node_material = v;
+      o->script.node_material = v;
     } else if (a == "--node-layout" && (v = value())) {
-      o->node_layout = v;
+      o->script.node_layout = v;
     } else if (a == "--size" && (v = value())) {
       if (std::sscanf(v, "%dx%d", &o->width, &o->height) != 2) return false;
     } else if (a == "--window-size" && i + 2 < argc) {
@@ -148,15 +133,15 @@ bool parse(int argc, char** argv, Options* o) {
     } else if (a == "--ui-scale" && (v = value())) {
       if (!number("--ui-scale", v, 0.5f, 3.f, &o->ui_scale)) return false;
     } else if (a == "--widget-report" && (v = value())) {
-      o->widget_report = v;
+      o->script.widget_report = v;
     } else if (a == "--export" && (v = value())) {
-      o->export_path = v;
+      o->script.export_path = v;
     } else if (a == "--scene-dump" && (v = value())) {
-      o->scene_dump = v;
+      o->script.scene_dump = v;
     } else if (a == "--input-script" && (v = value())) {
       o->input_script = v;
     } else if (a == "--drop" && (v = value())) {
-      o->drops.emplace_back(v);
+      o->script.drops.emplace_back(v);
     } else if (!a.empty() && a[0] != '-' && o->scene.empty()) {
       o->scene = a;
     } else {
@@ -185,36 +170,25 @@ float monitor_scale(GLFWwindow* window) {
   return std::clamp(std::round(dpi / 96.f * 4.f) / 4.f, 1.f, 3.f);
 }
 
-bool write_screenshot(const std::string& file, int width, int height) {
-  std::vector<uint8_t> rgba(size_t(width) * size_t(height) * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  inkray::RgbImage image{width, height, std::vector<inkray::Color>(size_t(width) * size_t(height))};
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const uint8_t* p = &rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4];  // GL rows go up
-      image.at(x, y) =
-          inkray::Color(inkray::srgb_to_linear(p[0] / 255.f), inkray::srgb_to_linear(p[1] / 255.f),
-                        inkray::srgb_to_linear(p[2] / 255.f));
-    }
+// Rebuilds the font atlas when the interface scale changed; the backend uploads it at
+// its first frame, and again here on later changes.
+void update_fonts(inkray::EditorApp& app, float* font_scale) {
+  if (app.ui_scale() == *font_scale) return;
+  const bool uploaded = *font_scale != 0.f;
+  *font_scale = app.ui_scale();
+  std::string warning;
+  inkray::set_ui_scale(*font_scale, &warning);
+  if (!warning.empty()) app.state().log.warning(warning);
+  if (uploaded) {
+    ImGui_ImplOpenGL3_DestroyFontsTexture();
+    ImGui_ImplOpenGL3_CreateFontsTexture();
   }
-  std::string error;
-  if (!inkray::write_image(file, image, &error)) {
-    std::fprintf(stderr, "inkray: %s\n", error.c_str());
-    return false;
-  }
-  return true;
-}
-
-bool write_text(const std::string& file, const std::string& text) {
-  std::string error;
-  if (inkray::write_file_atomically(file, text, &error)) return true;
-  std::fprintf(stderr, "inkray: %s\n", error.c_str());
-  return false;
 }
 
 }  // namespace
 
+// Dear ImGui's GLFW + OpenGL 3 example loop, with the editor as the one window's
+// content and, for tests and measurements, the scripted run's hooks around each frame.
 int main(int argc, char** argv) {
   Options opt;
   if (!parse(argc, argv, &opt)) {
@@ -254,98 +228,30 @@ int main(int argc, char** argv) {
     editor_options.scene = opt.scene;
     editor_options.threads = opt.threads;
     editor_options.input_script = opt.input_script;
-    // Scripted runs must not stop at a recovery question.
-    editor_options.offer_recovery = opt.screenshot.empty() && opt.measure_edits == 0;
+    editor_options.offer_recovery = opt.script.interactive();  // a scripted run must not stop at a question
     inkray::EditorApp app(editor_options);
     if (opt.ui_scale > 0.f) app.set_ui_scale_setting(opt.ui_scale);
     glfwSetWindowUserPointer(window, &app);
     glfwSetDropCallback(window, on_drop);
-    inkray::widget_report::enable(!opt.widget_report.empty());
+    inkray::ScriptedRun scripted(opt.script);
     float font_scale = 0.f;  // the scale the font atlas was built for
-    if (!opt.select.empty()) {
-      inkray::EditorState& state = app.state();
-      const auto& objects = state.document.scene().objects;
-      const auto found = std::find_if(objects.begin(), objects.end(),
-                                      [&](const inkray::ObjectDesc& o) { return o.name == opt.select; });
-      if (found == objects.end()) {
-        std::fprintf(stderr, "inkray: --select: no object named \"%s\"\n", opt.select.c_str());
-        exit_code = 1;
-      } else {
-        state.selection = {inkray::ItemKind::object, int(found - objects.begin())};
-      }
-    }
-
-    if (!opt.node_material.empty() && exit_code == 0) {
-      inkray::EditorState& state = app.state();
-      const auto& materials = state.document.scene().materials;
-      const auto found = std::find_if(materials.begin(), materials.end(), [&](const inkray::MaterialDesc& m) {
-        return m.name == opt.node_material;
-      });
-      if (found == materials.end()) {
-        std::fprintf(stderr, "inkray: --node-editor: no material named \"%s\"\n", opt.node_material.c_str());
-        exit_code = 1;
-      } else {
-        state.selection = {inkray::ItemKind::material, int(found - materials.begin())};
-        app.show_node_editor(true);
-      }
-    }
-
-    std::unique_ptr<inkray::measure::EditMeasurement> measurement;
-    bool kind_skipped = false;  // a kind this scene cannot take: measure the rest, then fail
-    if (opt.measure_edits > 0 && exit_code == 0) {
-      std::vector<inkray::measure::EditKind> kinds;
-      for (inkray::measure::EditKind kind :
-           opt.edit_kinds.empty() ? std::vector<inkray::measure::EditKind>{inkray::measure::EditKind::camera}
-                                  : opt.edit_kinds) {
-        if (const std::string why = inkray::measure::unavailable(kind, app.state().document.scene());
-            !why.empty()) {
-          std::fprintf(stderr, "inkray: --edit %s: %s\n",
-                       std::string(inkray::measure::kEditKindNames[size_t(kind)]).c_str(), why.c_str());
-          kind_skipped = true;
-        } else {
-          kinds.push_back(kind);
-        }
-      }
-      if (kinds.empty()) exit_code = 1;
-      measurement = std::make_unique<inkray::measure::EditMeasurement>(std::move(kinds), opt.measure_edits);
-    }
 
     using clock = std::chrono::steady_clock;
-    const auto start = clock::now();
-    uint64_t export_id = 0;
-    int export_finished_frame = -1;  // the screenshot waits a few frames more: the image view opens
-    int frame = 0;
-    // A failed --select or --edit leaves exit_code set and skips the loop.
-    for (; exit_code == 0; ++frame) {
+    bool running = scripted.start(app);
+    for (int frame = 0; running; ++frame) {
       const auto frame_start = clock::now();
       glfwPollEvents();
       if (glfwWindowShouldClose(window)) {
         glfwSetWindowShouldClose(window, GLFW_FALSE);
         app.request_quit();
       }
-      if (frame == 1) {
-        std::vector<const char*> drops;
-        for (const auto& d : opt.drops) drops.push_back(d.c_str());
-        if (!drops.empty()) on_drop(window, int(drops.size()), drops.data());
-      }
+      scripted.before_frame(app, frame);
       app.set_content_scale(monitor_scale(window));
-      if (app.ui_scale() != font_scale) {
-        // The atlas is rebuilt between frames; the backend uploads it at its first frame,
-        // and again here on later changes.
-        const bool uploaded = font_scale != 0.f;
-        font_scale = app.ui_scale();
-        std::string warning;
-        inkray::set_ui_scale(font_scale, &warning);
-        if (!warning.empty()) app.state().log.warning(warning);
-        if (uploaded) {
-          ImGui_ImplOpenGL3_DestroyFontsTexture();
-          ImGui_ImplOpenGL3_CreateFontsTexture();
-        }
-      }
+      update_fonts(app, &font_scale);
+
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      inkray::widget_report::begin_frame();
       int w = 0, h = 0;
       glfwGetFramebufferSize(window, &w, &h);
       app.frame(float(w), float(h));
@@ -357,59 +263,7 @@ int main(int argc, char** argv) {
       const double work_ms = std::chrono::duration<double, std::milli>(clock::now() - frame_start).count();
       glfwSetWindowTitle(window, app.window_title().c_str());
 
-      if (!opt.export_path.empty() && frame == 1) {
-        export_id = app.export_ui().start_for_test(app.state(), opt.export_path);
-        if (export_id == 0) {
-          std::fprintf(stderr, "inkray: --export: %s\n", app.export_ui().dialog_error().c_str());
-          exit_code = 1;
-          break;
-        }
-      }
-      if (export_id != 0 && export_finished_frame < 0) {
-        const inkray::ExportEntry* e = app.export_ui().queue().find(export_id);
-        if (!e || e->state == inkray::ExportState::done || e->state == inkray::ExportState::failed ||
-            e->state == inkray::ExportState::cancelled) {
-          export_finished_frame = frame;
-          if (!e || e->state != inkray::ExportState::done) {
-            std::fprintf(stderr, "inkray: --export: %s\n", e ? e->error.c_str() : "the export vanished");
-            exit_code = 1;
-            break;
-          }
-          std::printf("export: %d threads, %u spp in %.2f s\n", e->progress.threads, e->progress.spp,
-                      e->progress.elapsed_seconds);
-          for (const auto& f : e->written) std::printf("export wrote: %s\n", f.string().c_str());
-        }
-      }
-      const bool export_settled =
-          opt.export_path.empty() || (export_finished_frame >= 0 && frame >= export_finished_frame + 5);
-      const double seconds = std::chrono::duration<double>(clock::now() - start).count();
-      if (!opt.screenshot.empty() && frame >= opt.frames && export_settled &&
-          (app.viewport().shown_full_resolution() || seconds > 120.0)) {
-        const auto& v = app.viewport_frame();
-        std::printf("viewport image: %d %d %d %d\n", int(v.image_x), int(v.image_y), int(v.image_w),
-                    int(v.image_h));
-        std::printf("viewport spp: %u\n", app.viewport().shown_spp());
-        std::printf("viewport denoised: %d\n", app.viewport().shown_denoised() ? 1 : 0);
-        std::printf("ui scale: %.2f\n", app.ui_scale());
-        exit_code = write_screenshot(opt.screenshot, w, h) ? 0 : 1;
-        if (!opt.node_layout.empty() && !write_text(opt.node_layout, app.node_editor().layout()))
-          exit_code = 1;
-        if (!opt.scene_dump.empty() &&
-            !write_text(opt.scene_dump, inkray::scene_to_string(app.state().document.scene()))) {
-          exit_code = 1;
-        }
-        if (!opt.widget_report.empty() &&
-            !write_text(opt.widget_report, "window 0 0 " + std::to_string(w) + " " + std::to_string(h) +
-                                               "\n" + inkray::widget_report::text())) {
-          exit_code = 1;
-        }
-        break;
-      }
-      if (measurement && !measurement->step(app, work_ms)) {
-        if (measurement->failed() || kind_skipped) exit_code = 1;
-        break;
-      }
-      if (opt.screenshot.empty() && opt.measure_edits == 0 && opt.frames > 0 && frame >= opt.frames) break;
+      if (!scripted.after_frame(app, frame, w, h, work_ms)) break;
       glfwSwapBuffers(window);
       if (app.should_quit()) break;
       // Without a vsync (Xvfb) the loop would spin: hold it near 60 Hz, but draw a new
@@ -418,6 +272,7 @@ int main(int argc, char** argv) {
       std::this_thread::sleep_until(frame_start + std::chrono::milliseconds(4));
       app.wait_for_image(frame_start + std::chrono::microseconds(16600));
     }
+    exit_code = scripted.exit_code();
   }
   glfwSetWindowUserPointer(window, nullptr);
   ImGui_ImplOpenGL3_Shutdown();
