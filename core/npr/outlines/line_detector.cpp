@@ -74,18 +74,18 @@ float pair_spread(const PerceivedSurface& c, const PerceivedSurface& s, float th
   return spread + 0.5f * (c.blur + s.blur) / std::max(stencil_angle, 1e-12f);
 }
 
-// The line width at this sample in pixels, before the per-type multipliers.
+// The line width at this sample in pixels, before the per-type multipliers. It reads
+// the compiled setup only, never the document's outline settings.
 float sample_width_px(const RenderScene& scene, const LineSetup& setup, const Camera& camera,
                       const PerceivedSurface& centre, const Vec3& ray_dir) {
-  const OutlineDesc& o = scene.outlines;
   const float distance = centre.hit ? centre.distance : setup.miss_distance;
   float width = setup.width_px;
   if (setup.world_width) {
     const float along_view = distance * std::max(glm::dot(ray_dir, camera.forward()), 1e-3f);
-    width = camera.world_to_pixels(o.width, along_view);
+    width = camera.world_to_pixels(setup.world_width_units, along_view);
   }
-  if (o.distance_falloff > 0.f && distance > o.falloff_start && o.falloff_start > 0.f)
-    width *= std::pow(o.falloff_start / distance, o.distance_falloff);
+  if (setup.distance_falloff > 0.f && distance > setup.falloff_start && setup.falloff_start > 0.f)
+    width *= std::pow(setup.falloff_start / distance, setup.distance_falloff);
   if (centre.hit) width *= scene.objects[centre.object].lines.width_scale * centre.line_width;
   return width;
 }
@@ -145,6 +145,9 @@ LineSetup make_line_setup(const RenderScene& scene, int divisor) {
                : o.unit == LineWidthUnit::percent ? o.width * height / 100.f
                                                   : 0.f;
   s.world_width = o.unit == LineWidthUnit::world;
+  s.world_width_units = o.width;
+  s.distance_falloff = o.distance_falloff;
+  s.falloff_start = o.falloff_start;
   // World widths vary per sample; a couple of pixels stands for them.
   s.nominal_radius_px =
       std::max(s.world_width ? 2.f : s.width_px * s.max_width, kMinLineWidthPx) * kStencilRadiusPerWidth;

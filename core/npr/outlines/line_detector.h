@@ -38,6 +38,9 @@ struct LineSetup {
   bool adaptive = true;                       // line_sampling.h may trace fewer or more
   float width_px = 0.f;                       // base width in pixels of this image (pixels and percent units)
   bool world_width = false;                   // width in world units: depends on the centre's distance
+  float world_width_units = 0.f;              // that width, in world units, when world_width
+  float distance_falloff = 0.f;               // width *= (falloff_start / distance)^this beyond falloff_start
+  float falloff_start = 0.f;                  // 0: no falloff
   float nominal_radius_px = 1.f;              // the widest type's stencil radius for a typical sample
   float miss_distance = 1.f;  // distance used for world widths and falloff where the centre sees nothing
   float crease_cos = 0.f, intersection_cos = 0.f;
