@@ -177,6 +177,12 @@ void AssetCache::mark_used(const std::string& key, Entry& entry) {
     if (const auto it = entries_.find(source); it != entries_.end()) mark_used(source, it->second);
 }
 
+void AssetCache::drop(const std::string& key) {
+  const std::lock_guard lock(mutex_);
+  const auto it = entries_.find(key);
+  if (it != entries_.end() && it->second.used != compile_) entries_.erase(it);
+}
+
 void AssetCache::touch(const std::vector<std::string>& keys) {
   const std::lock_guard lock(mutex_);
   for (const std::string& key : keys)

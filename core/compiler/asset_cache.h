@@ -82,6 +82,9 @@ class AssetCache {
     mark_used(key, entry);
     return value;
   }
+  // Forgets an entry that nothing of this compile uses any more (the placement of an
+  // object that moved), where no finish_compile() follows to drop it.
+  void drop(const std::string& key);
   // Marks entries used (those a reused step of the compile found when it ran).
   void touch(const std::vector<std::string>& keys);
   // While set, the keys of every entry found or kept are appended here, so a step

@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <map>
+#include <string_view>
+#include <unordered_map>
 
 namespace inkray {
 namespace {
@@ -34,12 +36,6 @@ LineOverride combine_lines(const LineOverrideDesc& material, const LineOverrideD
   l.override_color = material.override_color || object.override_color;
   l.color = object.override_color ? object.color : material.color;
   return l;
-}
-
-size_t material_source(const SceneDesc& desc, const ObjectDesc& obj) {
-  for (size_t m = 0; m < desc.materials.size(); ++m)
-    if (desc.materials[m].name == obj.material) return m;
-  return 0;
 }
 
 // What can move while the shutter is open, the camera and the objects' transforms
@@ -102,6 +98,13 @@ void set_crease_patches(const OutlineDesc& outlines,
   for (size_t i = 0; i < scene.objects.size(); ++i)
     scene.objects[i].crease_patches =
         wanted && i < placed.size() ? crease_patches(*placed[i], outlines.crease.threshold, assets) : nullptr;
+}
+
+void set_bounds(RenderScene& scene) {
+  Point3 lo(0.f), hi(0.f);
+  if (scene.geometry.shape_count()) scene.geometry.bounds(&lo, &hi);
+  scene.scene_center = 0.5f * (lo + hi);
+  scene.scene_radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
 }
 
 Stage stage_of(AssetKind kind) {
@@ -206,7 +209,13 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   // they stop here with the reader's messages rather than deeper with vaguer ones.
   assets_.begin_compile();
   ErrorLog log("");
-  check_scene(desc, desc.base_dir, log);
+  // The last document compiled had no problem: with the same names and no file
+  // changed on disk, only the items the edit changed can have one
+  // (docs/architecture.md, "Checks of an edit").
+  std::optional<CheckScope> scope;
+  if (last_desc_ && file_changes.empty() && same_names(*last_desc_, desc))
+    scope = changed_items(*last_desc_, desc);
+  check_scene(desc, desc.base_dir, log, scope ? &*scope : nullptr);
   result.errors = log.take();
   forgive_missing_files(references, result.errors);
   if (result.errors.empty())
@@ -269,45 +278,76 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   for (size_t i = 0; i < scene->material_names.size(); ++i)
     material_index[scene->material_names[i]] = uint32_t(i);
 
+  if (!shutter && reuse_objects(desc, result.changes, file_changes.has(Stage::geometry),
+                                options.stand_in_for_missing_assets, *scene)) {
+    compile_lights(desc, *scene);
+    ++counters_.light_tables;
+    // No finish_compile(): the shapes of the objects that stayed were not looked up, and
+    // the next compile that places every object drops what neither uses.
+    material_keys_ = std::move(material_keys);
+    remember(std::move(scene), document_materials);
+    return result;
+  }
+
   ObjectBuild objects{assets_, counters_, desc.base_dir, options.stand_in_for_missing_assets};
   std::vector<StrokeAnchor> anchors;
   std::vector<std::shared_ptr<const PlacedShape>> placed_objects;
+  // Placements of the last compile, by document object, serve objects whose shape and
+  // transform are as they were while no mesh file changed on disk: a move of one object
+  // of thousands places one (docs/architecture.md, "Stages").
+  std::vector<Placement> placements(desc.objects.size());
+  const bool reuse_placements = last_desc_ && !file_changes.has(Stage::geometry) &&
+                                last_desc_->base_dir == desc.base_dir &&
+                                last_stand_ins_ == options.stand_in_for_missing_assets;
+  std::vector<std::string> reused_keys;
+  // The material an object's line overrides come from: the first of its name.
+  std::unordered_map<std::string_view, size_t> first_material;
+  for (size_t m = desc.materials.size(); m-- > 0;) first_material[desc.materials[m].name] = m;
   for (size_t i = 0; i < desc.objects.size(); ++i) {
     if ((i & 255) == 0 && cancelled()) return result;
     const ObjectDesc& obj = desc.objects[i];
     if (!obj.visible) continue;
-    const std::string where = "objects[" + std::to_string(i) + "] \"" + obj.name + "\": ";
+    const auto where = [&] { return "objects[" + std::to_string(i) + "] \"" + obj.name + "\": "; };
     const auto mat = material_index.find(obj.material);
     if (mat == material_index.end()) {
-      result.errors.push_back(where + "no material named \"" + obj.material + "\"");
+      result.errors.push_back(where() + "no material named \"" + obj.material + "\"");
       continue;
     }
+    const Transform to_world = transform_from_desc(obj.transform);
     // At a frame where its scale is zero (an animated flip) an object that stands still
     // is not there: no surface, light or strokes. One that moves is traced over the rest
     // of the shutter (docs/architecture.md, "Singular transforms").
-    if (!placeable(transform_from_desc(obj.transform)) &&
+    if (!placeable(to_world) &&
         (!moves(shutter, i) || motion_pieces(transform_from_desc(shutter->open.objects[i].transform),
                                              transform_from_desc(shutter->close.objects[i].transform))
                                    .empty()))
       continue;
     std::string key, error;
-    const auto placed = place_object(obj, objects, &key, &error);
+    std::shared_ptr<const PlacedShape> placed;
+    if (reuse_placements && i < placements_.size() && placements_[i].placed &&
+        last_desc_->objects[i].shape == obj.shape && last_desc_->objects[i].transform == obj.transform) {
+      placed = placements_[i].placed;
+      key = placements_[i].key;
+      reused_keys.push_back(key);
+    } else {
+      placed = place_object(obj, objects, &key, &error);
+    }
     if (!placed) {
-      result.errors.push_back(where + error);
+      result.errors.push_back(where() + error);
       continue;
     }
     if (!placed->problem.empty()) {
-      result.errors.push_back(where + placed->problem);
+      result.errors.push_back(where() + placed->problem);
       continue;
     }
-    const Transform to_world = transform_from_desc(obj.transform);
+    placements[i] = {key, placed};
     if (moves(shutter, i)) {
       // Traced where it stands at each ray's instant; lights and strokes read it at
       // the frame (docs/architecture.md, "Motion blur").
       const MovingShape moving = place_moving(obj, *placed, shutter->open.objects[i].transform,
                                               shutter->close.objects[i].transform, objects);
       if (!moving.problem.empty()) {
-        result.errors.push_back(where + "while the shutter is open, " + moving.problem);
+        result.errors.push_back(where() + "while the shutter is open, " + moving.problem);
         continue;
       }
       scene->geometry.add_moving(moving.bvh, moving.open, moving.close, nullptr, placed->world);
@@ -315,11 +355,11 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
       scene->geometry.add(placed->bvh, placed->to_world, placed->world);
     }
     scene->objects.push_back({obj.name, mat->second, -1, uint32_t(i), mat->second,
-                              combine_lines(desc.materials[material_source(desc, obj)].lines, obj.lines),
+                              combine_lines(desc.materials[first_material[obj.material]].lines, obj.lines),
                               Transform{to_world.inv, to_world.m}, Transform{}});
     anchors.push_back(stroke_anchor(obj, i, *placed, std::move(key), objects));
     if (!anchors.back().world) {
-      result.errors.push_back(where + "cannot be placed as it stands at frame " +
+      result.errors.push_back(where() + "cannot be placed as it stands at frame " +
                               std::to_string(desc.render.frame_start) + ", where its strokes grow");
       continue;
     }
@@ -334,6 +374,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
     placed_objects.push_back(placed);
   }
   if (!result.errors.empty()) return result;
+  assets_.touch(reused_keys);
   // Strokes grow on the compiled objects and join the same BVH.
   if (cancelled()) return result;
   StrokeBuild strokes{assets_, counters_, options.cancel};
@@ -345,22 +386,92 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   if (last_ && scene->geometry.same_instances(last_->geometry)) {
     scene->geometry = last_->geometry;
   } else {
-    scene->geometry.commit();
+    scene->geometry.commit(last_ ? &last_->geometry : nullptr);
     ++counters_.top_levels;
   }
 
-  Point3 lo(0.f), hi(0.f);
-  if (scene->geometry.shape_count()) scene->geometry.bounds(&lo, &hi);
-  scene->scene_center = 0.5f * (lo + hi);
-  scene->scene_radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+  set_bounds(*scene);
   compile_lights(desc, *scene);
   ++counters_.light_tables;
 
   assets_.finish_compile();
   material_keys_ = std::move(material_keys);
   placed_ = std::move(placed_objects);
+  placements_ = std::move(placements);
+  last_stand_ins_ = options.stand_in_for_missing_assets;
   remember(std::move(scene), document_materials);
   return result;
+}
+
+bool SceneCompiler::reuse_objects(const SceneDesc& desc, StageSet changes, bool files_changed, bool stand_ins,
+                                  RenderScene& scene) {
+  // Strokes are painted from their objects' materials and grow on their shapes, so a
+  // scene with emitters takes the whole pass, as does one whose files changed on disk.
+  if (!last_ || changes.has(Stage::geometry) || changes.has(Stage::strokes) || files_changed || rest_ ||
+      !desc.strokes.empty() || !last_desc_->strokes.empty() || last_->geometry.any_moving() ||
+      stand_ins != last_stand_ins_ || desc.base_dir != last_desc_->base_dir ||
+      desc.objects.size() != last_desc_->objects.size() ||
+      last_document_materials_ != last_->materials.size() || scene.material_names != last_->material_names)
+    return false;
+  // The compiled object of each document object (-1: hidden or not placeable then).
+  std::vector<int> compiled(desc.objects.size(), -1);
+  for (size_t o = 0; o < last_->objects.size(); ++o) compiled[last_->objects[o].source] = int(o);
+  struct Move {
+    size_t object;
+    std::string key;
+    std::shared_ptr<const PlacedShape> placed;
+  };
+  std::vector<Move> moves;
+  if (changes.has(Stage::object)) {
+    ObjectBuild build{assets_, counters_, desc.base_dir, stand_ins};
+    for (size_t i = 0; i < desc.objects.size(); ++i) {
+      const ObjectDesc& before = last_desc_->objects[i];
+      const ObjectDesc& after = desc.objects[i];
+      if (before == after) continue;
+      // Only a new transform (and line overrides, read below for every object) is
+      // handled here; a renamed, hidden or re-materialled object takes the whole pass.
+      ObjectDesc same = after;
+      same.transform = before.transform;
+      same.lines = before.lines;
+      if (!(same == before) || compiled[i] < 0 || moves.size() == kMostMovedObjects) return false;
+      if (before.transform == after.transform) continue;
+      // Placed before anything changes: an object that cannot be placed leaves the
+      // whole pass to report it.
+      if (!placeable(transform_from_desc(after.transform))) return false;
+      std::string key, error;
+      auto placed = place_object(after, build, &key, &error);
+      if (!placed || !placed->problem.empty()) return false;
+      moves.push_back({i, std::move(key), std::move(placed)});
+    }
+  }
+  scene.objects = last_->objects;
+  scene.geometry = moves.empty() ? last_->geometry : EmbreeScene::with_instances_of(last_->geometry);
+  const bool creases = wants_crease_patches(desc.outlines);
+  for (Move& m : moves) {
+    const auto index = uint32_t(compiled[m.object]);
+    RenderObject& o = scene.objects[index];
+    const Transform to_world = transform_from_desc(desc.objects[m.object].transform);
+    o.to_object = Transform{to_world.inv, to_world.m};
+    o.crease_patches = creases ? crease_patches(*m.placed, desc.outlines.crease.threshold, assets_) : nullptr;
+    scene.geometry.replace(index, m.placed->bvh, m.placed->to_world, m.placed->world);
+    placed_[index] = m.placed;
+    // The placement it leaves is dropped, so a drag does not pile up world-space copies.
+    if (placements_[m.object].key != m.key) assets_.drop(placements_[m.object].key);
+    placements_[m.object] = {std::move(m.key), std::move(m.placed)};
+  }
+  for (RenderObject& o : scene.objects)
+    o.lines = combine_lines(desc.materials[o.material].lines, desc.objects[o.source].lines);
+  if (!same_crease_patches(last_->outlines, desc.outlines))
+    set_crease_patches(desc.outlines, placed_, scene, assets_);
+  if (moves.empty()) {
+    scene.scene_center = last_->scene_center;
+    scene.scene_radius = last_->scene_radius;
+  } else {
+    scene.geometry.commit(&last_->geometry);
+    ++counters_.top_levels;
+    set_bounds(scene);
+  }
+  return true;
 }
 
 StrokeAnchor SceneCompiler::stroke_anchor(const ObjectDesc& obj, size_t index, const PlacedShape& placed,

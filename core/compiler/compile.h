@@ -72,6 +72,15 @@ class SceneCompiler {
   CompileResult compile_world(const SceneDesc& desc, const CompileOptions& options,
                               const std::vector<AssetReference>& references);
 
+  // The objects and top level of last_ for `scene` (compiled up to its materials), with
+  // the objects whose transforms changed placed anew, when the edit `changes` touched
+  // nothing else of the objects (a material, light or transform edit) and none of
+  // them moves while the shutter is open. False, leaving `scene` as it was, when the
+  // whole object pass is needed.
+  bool reuse_objects(const SceneDesc& desc, StageSet changes, bool files_changed, bool stand_ins,
+                     RenderScene& scene);
+  // More moved objects than this take the whole object pass.
+  static constexpr size_t kMostMovedObjects = 64;
   // Where object `index`'s strokes grow: its place at the shot's first frame.
   StrokeAnchor stroke_anchor(const ObjectDesc& obj, size_t index, const PlacedShape& placed, std::string key,
                              ObjectBuild& build) const;
@@ -88,6 +97,15 @@ class SceneCompiler {
   // patches a new crease threshold recomputes without recompiling the world.
   std::vector<std::shared_ptr<const PlacedShape>> placed_;
   std::vector<std::string> asset_warnings_;  // the missing and unreadable files last reported
+  // Where the last compile placed each document object (null where it placed none),
+  // and the cache key of that placement: an object whose shape and transform stay is
+  // placed the same again.
+  struct Placement {
+    std::string key;
+    std::shared_ptr<const PlacedShape> placed;
+  };
+  std::vector<Placement> placements_;
+  bool last_stand_ins_ = false;  // CompileOptions::stand_in_for_missing_assets of that compile
 };
 
 CompileResult compile_scene(const SceneDesc& desc, const CompileOptions& options = {});

@@ -452,6 +452,7 @@ bool animated_between(const SceneDesc& desc, double from, double to) {
 
 std::vector<std::string> check_animation(const SceneDesc& desc) {
   std::vector<std::string> problems;
+  if (desc.animation.empty()) return problems;  // the resolver's index of every item is not needed
   // The first track on each target: a later one is reported against it, once, so
   // thousands of tracks on one target cost a line each rather than a line per pair.
   std::unordered_map<std::string_view, size_t> first_on;

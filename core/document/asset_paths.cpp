@@ -2,11 +2,13 @@
 // asset type needs no change here.
 #include "core/document/asset_paths.h"
 
+#include "core/document/asset_probe.h"
 #include "core/document/error_log.h"
 #include "core/document/tagged_variant.h"
 
 #include <string>
 #include <type_traits>
+#include <utility>
 
 namespace inkray {
 namespace {
@@ -71,34 +73,48 @@ std::string rebase(const std::string& written, const fs::path& from, const fs::p
 template <class Scene, class Visit>
 void walk_asset_paths(Scene& scene, const Visit& f) {
   using Finder = PathFinder<Visit>;
-  const auto section = [&](auto& items, const char* name, const char* noun, auto&& visit) {
+  // `may_name` passes over items that name no file (most objects of a large scene)
+  // without building their paths.
+  const auto section = [&](auto& items, const char* name, const char* noun, auto&& visit, auto&& may_name) {
     for (size_t i = 0; i < items.size(); ++i) {
+      if (!may_name(std::as_const(items[i]))) continue;
       const AssetSite owner{{}, std::string(noun) + " " + in_quotes(items[i].name)};
       visit(element_path(name, i), items[i], owner);
     }
   };
+  const auto every = [](const auto&) { return true; };
   const AssetSite environment{{}, "the environment"};
   Finder{{}, environment, f}.visit_tagged("environment", scene.environment);
-  section(scene.materials, "materials", "material",
-          [&](const std::string& at, auto& m, const AssetSite& owner) {
-            Finder{{}, owner, f}.visit_tagged(at, m.data);
-          });
-  section(scene.objects, "objects", "object", [&](const std::string& at, auto& o, const AssetSite& owner) {
-    Finder finder{at, owner, f};
-    visit_params(o, finder);
-    finder.visit_tagged(at + ".shape", o.shape);
-  });
-  section(scene.lights, "lights", "light", [&](const std::string& at, auto& l, const AssetSite& owner) {
-    Finder{{}, owner, f}.visit_tagged(at, l.data);
-  });
-  section(scene.strokes, "strokes", "stroke emitter",
-          [&](const std::string& at, auto& s, const AssetSite& owner) {
-            // An emitter's one path is its brush image, read only by the image brush.
-            AssetSite emitter = owner;
-            emitter.in_use = s.brush == BrushKind::image;
-            Finder finder{at, emitter, f};
-            visit_params(s, finder);
-          });
+  section(
+      scene.materials, "materials", "material",
+      [&](const std::string& at, auto& m, const AssetSite& owner) {
+        Finder{{}, owner, f}.visit_tagged(at, m.data);
+      },
+      every);
+  section(
+      scene.objects, "objects", "object",
+      [&](const std::string& at, auto& o, const AssetSite& owner) {
+        Finder finder{at, owner, f};
+        visit_params(o, finder);
+        finder.visit_tagged(at + ".shape", o.shape);
+      },
+      [](const auto& o) { return may_name_files(o) || may_name_files(o.shape); });
+  section(
+      scene.lights, "lights", "light",
+      [&](const std::string& at, auto& l, const AssetSite& owner) {
+        Finder{{}, owner, f}.visit_tagged(at, l.data);
+      },
+      every);
+  section(
+      scene.strokes, "strokes", "stroke emitter",
+      [&](const std::string& at, auto& s, const AssetSite& owner) {
+        // An emitter's one path is its brush image, read only by the image brush.
+        AssetSite emitter = owner;
+        emitter.in_use = s.brush == BrushKind::image;
+        Finder finder{at, emitter, f};
+        visit_params(s, finder);
+      },
+      every);
 }
 
 }  // namespace

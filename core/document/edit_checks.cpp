@@ -4,6 +4,7 @@
 #include "core/document/scene_checks.h"
 
 #include <algorithm>
+#include <optional>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -102,29 +103,44 @@ struct UnsetNames {
 
 }  // namespace
 
-std::vector<std::string> scene_problems(const SceneDesc& scene) {
+namespace {
+
+std::vector<std::string> scoped_problems(const SceneDesc& scene, const CheckScope* scope) {
   ErrorLog log("", ReadFor::editing);
-  check_scene(scene, scene.base_dir, log);
+  check_scene(scene, scene.base_dir, log, scope);
   std::vector<std::string> problems = log.take();
   for (std::string& warning : log.take_warnings()) problems.push_back(std::move(warning));
-  for (size_t i = 0; i < scene.materials.size(); ++i)
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    if (scope && !scope->materials[i]) continue;
     UnsetNames::tagged(element_path("materials", i), scene.materials[i].data, &problems);
+  }
   for (size_t i = 0; i < scene.objects.size(); ++i) {
+    if (scope && !scope->objects[i]) continue;
     UnsetNames names{element_path("objects", i), &problems};
     visit_params(scene.objects[i], names);
   }
   for (size_t i = 0; i < scene.strokes.size(); ++i) {
+    if (scope && !scope->strokes[i]) continue;
     UnsetNames names{element_path("strokes", i), &problems};
     visit_params(scene.strokes[i], names);
   }
   return problems;
 }
 
+}  // namespace
+
+std::vector<std::string> scene_problems(const SceneDesc& scene) { return scoped_problems(scene, nullptr); }
+
 std::vector<std::string> problems_added(const SceneDesc& before, const SceneDesc& after) {
+  // An edit that keeps every name (a parameter, a transform) is checked on the items it
+  // changed; one that adds, removes or renames items on the whole document.
+  std::optional<CheckScope> scope;
+  if (same_names(before, after)) scope = changed_items(before, after);
+  const CheckScope* in = scope ? &*scope : nullptr;
   std::unordered_map<std::string, int> known;
-  for (std::string& p : scene_problems(before)) ++known[std::move(p)];
+  for (std::string& p : scoped_problems(before, in)) ++known[std::move(p)];
   std::vector<std::string> added;
-  for (std::string& p : scene_problems(after)) {
+  for (std::string& p : scoped_problems(after, in)) {
     int& count = known[p];
     if (count > 0) {
       --count;

@@ -4,6 +4,7 @@
 #include "core/document/scene_checks.h"
 
 #include "core/document/animation.h"
+#include "core/document/asset_probe.h"
 
 #include "core/document/tagged_variant.h"
 
@@ -58,31 +59,47 @@ struct AssetCollector {
 
 }  // namespace
 
-std::vector<AssetRef> collect_assets(const SceneDesc& scene) {
-  std::vector<AssetRef> assets;
+namespace {
+
+bool in_scope(const std::vector<bool>* section, std::size_t i) { return !section || (*section)[i]; }
+
+void collect_assets(const SceneDesc& scene, const CheckScope* scope, std::vector<AssetRef>& assets) {
   AssetCollector::collect_tagged("environment", scene.environment, assets);
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    if (!in_scope(scope ? &scope->materials : nullptr, i)) continue;
     AssetCollector::collect_tagged(element_path("materials", i), scene.materials[i].data, assets);
   }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (!in_scope(scope ? &scope->objects : nullptr, i) || !may_name_files(scene.objects[i].shape)) continue;
     AssetCollector::collect_tagged(element_path("objects", i) + ".shape", scene.objects[i].shape, assets);
   }
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    if (!in_scope(scope ? &scope->lights : nullptr, i)) continue;
     AssetCollector::collect_tagged(element_path("lights", i), scene.lights[i].data, assets);
   }
   // An emitter keeps its brush_image while another brush is chosen; only a used one must exist.
   for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
-    if (scene.strokes[i].brush != BrushKind::image) continue;
+    if (!in_scope(scope ? &scope->strokes : nullptr, i) || scene.strokes[i].brush != BrushKind::image)
+      continue;
     AssetCollector collector{element_path("strokes", i), assets, AssetKind::brush};
     visit_params(scene.strokes[i], collector);
   }
+}
+
+}  // namespace
+
+std::vector<AssetRef> collect_assets(const SceneDesc& scene) {
+  std::vector<AssetRef> assets;
+  collect_assets(scene, nullptr, assets);
   return assets;
 }
 
 namespace {
 
-void check_assets(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log) {
-  for (const auto& [at, written, kind, required] : collect_assets(scene)) {
+void check_assets(const SceneDesc& scene, const fs::path& base_dir, const CheckScope* scope, ErrorLog& log) {
+  std::vector<AssetRef> assets;
+  collect_assets(scene, scope, assets);
+  for (const auto& [at, written, kind, required] : assets) {
     if (written.empty()) {
       // An image texture or mesh the editor has just added, before a file is chosen.
       if (required) log.add_unrenderable(at, "no file given (expected a path relative to the scene file)");
@@ -139,10 +156,11 @@ std::unordered_set<std::string_view> name_set(const std::vector<Item>& items) {
   return names;
 }
 
-void check_material_references(const SceneDesc& scene, ErrorLog& log) {
+void check_material_references(const SceneDesc& scene, const CheckScope* scope, ErrorLog& log) {
   const std::string known = defined_names(scene.materials, "materials");
   const auto names = name_set(scene.materials);
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (!in_scope(scope ? &scope->objects : nullptr, i)) continue;
     const std::string& name = scene.objects[i].material;
     if (!name.empty() && !names.contains(name)) {
       log.add_unrenderable(element_path("objects", i) + ".material",
@@ -151,7 +169,7 @@ void check_material_references(const SceneDesc& scene, ErrorLog& log) {
   }
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const auto* mix = std::get_if<MixDesc>(&scene.materials[i].data);
-    if (!mix) continue;
+    if (!mix || !in_scope(scope ? &scope->materials : nullptr, i)) continue;
     for (const auto& [key, name] : {std::pair{".a", &mix->a}, std::pair{".b", &mix->b}}) {
       if (!name->empty() && !names.contains(*name))
         log.add_unrenderable(element_path("materials", i) + key,
@@ -233,10 +251,18 @@ std::string shown(float x) {
   return std::string(buffer, result.ptr);
 }
 
-void check_strokes(const SceneDesc& scene, ErrorLog& log) {
-  const std::string known = defined_names(scene.objects, "objects");
-  const auto objects = name_set(scene.objects);
+void check_strokes(const SceneDesc& scene, const CheckScope* scope, ErrorLog& log) {
+  // The object names only when some emitter is checked: a scene of many objects
+  // and no strokes does not pay for them.
+  std::string known;
+  std::unordered_set<std::string_view> objects;
+  bool listed = false;
   for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
+    if (!in_scope(scope ? &scope->strokes : nullptr, i)) continue;
+    if (!std::exchange(listed, true)) {
+      known = defined_names(scene.objects, "objects");
+      objects = name_set(scene.objects);
+    }
     const StrokeEmitterDesc& e = scene.strokes[i];
     const std::string at = element_path("strokes", i);
     if (!e.object.empty() && !objects.contains(e.object))
@@ -289,7 +315,7 @@ void name_unnamed(SceneDesc& scene) {
 
 // Geometry that has no direction: a spot aimed at its own position, a camera
 // looking at its own eye, an up vector along the view direction.
-void check_degenerate_directions(const SceneDesc& scene, ErrorLog& log) {
+void check_degenerate_directions(const SceneDesc& scene, const CheckScope* scope, ErrorLog& log) {
   const CameraDesc& c = scene.camera;
   const Vec3 view = c.look_at - c.look_from;
   if (glm::length(view) == 0.f) {
@@ -299,13 +325,48 @@ void check_degenerate_directions(const SceneDesc& scene, ErrorLog& log) {
   }
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const auto* spot = std::get_if<SpotLightDesc>(&scene.lights[i].data);
+    if (!in_scope(scope ? &scope->lights : nullptr, i)) continue;
     if (spot && glm::length(spot->target - spot->position) == 0.f)
       log.add_unrenderable("lights[" + std::to_string(i) + "].target",
                            "must differ from the spot light's position");
   }
 }
 
-void check_scene(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log) {
+bool CheckScope::empty() const {
+  for (const std::vector<bool>* section : {&materials, &objects, &lights, &strokes})
+    if (std::find(section->begin(), section->end(), true) != section->end()) return false;
+  return true;
+}
+
+namespace {
+
+template <class Item>
+bool same_names(const std::vector<Item>& a, const std::vector<Item>& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
+                                            [](const Item& x, const Item& y) { return x.name == y.name; });
+}
+
+template <class Item>
+std::vector<bool> changed(const std::vector<Item>& before, const std::vector<Item>& after) {
+  std::vector<bool> out(after.size());
+  for (std::size_t i = 0; i < after.size(); ++i) out[i] = !(before[i] == after[i]);
+  return out;
+}
+
+}  // namespace
+
+bool same_names(const SceneDesc& a, const SceneDesc& b) {
+  return a.base_dir == b.base_dir && same_names(a.materials, b.materials) &&
+         same_names(a.objects, b.objects) && same_names(a.lights, b.lights) &&
+         same_names(a.strokes, b.strokes);
+}
+
+CheckScope changed_items(const SceneDesc& before, const SceneDesc& after) {
+  return {changed(before.materials, after.materials), changed(before.objects, after.objects),
+          changed(before.lights, after.lights), changed(before.strokes, after.strokes)};
+}
+
+void check_scene(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log, const CheckScope* scope) {
   const long long pixels = static_cast<long long>(scene.render.width) * scene.render.height;
   if (pixels > kMaxImagePixels) {
     log.add_unrenderable("render", "image size " + std::to_string(scene.render.width) + " x " +
@@ -313,15 +374,17 @@ void check_scene(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log
                                        " pixels is over the limit of " + std::to_string(kMaxImagePixels) +
                                        " (8192 x 8192)");
   }
-  check_unique_names(scene.materials, "materials", "material", log);
-  check_unique_names(scene.objects, "objects", "object", log);
-  check_unique_names(scene.lights, "lights", "light", log);
-  check_unique_names(scene.strokes, "strokes", "stroke emitter", log);
-  check_material_references(scene, log);
+  if (!scope) {  // a scope's documents have the names of one already checked
+    check_unique_names(scene.materials, "materials", "material", log);
+    check_unique_names(scene.objects, "objects", "object", log);
+    check_unique_names(scene.lights, "lights", "light", log);
+    check_unique_names(scene.strokes, "strokes", "stroke emitter", log);
+  }
+  check_material_references(scene, scope, log);
   check_mix_cycles(scene, log);
-  check_strokes(scene, log);
-  check_assets(scene, base_dir, log);
-  check_degenerate_directions(scene, log);
+  check_strokes(scene, scope, log);
+  check_assets(scene, base_dir, scope, log);
+  check_degenerate_directions(scene, scope, log);
   if (scene.render.frame_end < scene.render.frame_start)
     log.add_unrenderable("render.frame_end", "must not be before render.frame_start (" +
                                                  std::to_string(scene.render.frame_start) + ")");

@@ -46,6 +46,25 @@ void name_unnamed(SceneDesc& scene);
 // kMaxImagePixels. Paths in messages are JSON paths.
 // All of these leave the document whole, so they are ErrorLog::add_unrenderable
 // problems (warnings when it is read for editing), but a path with a NUL.
-void check_scene(const SceneDesc& scene, const std::filesystem::path& base_dir, ErrorLog& log);
+// With a scope, only its items are checked (see CheckScope).
+struct CheckScope;
+void check_scene(const SceneDesc& scene, const std::filesystem::path& base_dir, ErrorLog& log,
+                 const CheckScope* scope = nullptr);
+
+// The items of the document's lists a check reads, for checking an edit in time
+// proportional to what it changed (docs/architecture.md, "Checks of an edit"). Valid
+// between two documents whose lists hold the same names in the same order under the same
+// base_dir (same_names): then duplicate names and every reference from an unchanged item
+// are as they were, and so is every problem of an unchanged item. The document-wide
+// checks (image size, frame range, camera, mix cycles, the stroke budget, animation)
+// always run. Files are not looked at again for unchanged items: a caller that must
+// see files change on disk checks them itself (SceneCompiler stamps them).
+struct CheckScope {
+  std::vector<bool> materials, objects, lights, strokes;  // per item: changed
+  bool empty() const;                                     // no item changed
+};
+bool same_names(const SceneDesc& a, const SceneDesc& b);
+// The items that differ between two documents with the same names (same_names).
+CheckScope changed_items(const SceneDesc& before, const SceneDesc& after);
 
 }  // namespace inkray

@@ -393,6 +393,8 @@ ShapeBvh::~ShapeBvh() { rtcReleaseScene(scene_); }
 EmbreeScene::Impl::~Impl() {
   for (const auto& pieces : motion)
     for (const MotionGeometry& piece : pieces) rtcReleaseGeometry(piece.geom);
+  for (RTCGeometry geom : still)
+    if (geom) rtcReleaseGeometry(geom);
   if (scene) rtcReleaseScene(scene);
 }
 
@@ -415,6 +417,22 @@ uint32_t EmbreeScene::add(std::shared_ptr<const ShapeBvh> bvh, const Transform& 
   return uint32_t(impl_->instances.size() - 1);
 }
 
+EmbreeScene EmbreeScene::with_instances_of(const EmbreeScene& other) {
+  EmbreeScene scene;
+  scene.impl_->instances = other.impl_->instances;
+  return scene;
+}
+
+void EmbreeScene::replace(uint32_t index, std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
+                          std::shared_ptr<const Shape> world) {
+  if (impl_->committed) throw std::logic_error("EmbreeScene::replace after commit");
+  Instance& instance = impl_->instances.at(index);
+  if (instance.moving) throw std::logic_error("EmbreeScene::replace of a moving shape");
+  instance.bvh = std::move(bvh);
+  instance.to_world = to_world;
+  instance.world = std::move(world);
+}
+
 uint32_t EmbreeScene::add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open,
                                  const Transform& close, std::shared_ptr<const Shape> local,
                                  std::shared_ptr<const Shape> world, bool indirect) {
@@ -425,13 +443,24 @@ uint32_t EmbreeScene::add_moving(std::shared_ptr<const ShapeBvh> bvh, const Tran
   return uint32_t(impl_->instances.size() - 1);
 }
 
-void EmbreeScene::commit() {
+void EmbreeScene::commit(const EmbreeScene* previous) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::commit twice");
+  if (previous && !previous->impl_->committed) previous = nullptr;
   RTCDevice device = shared_embree_device();
   // Few instances, rebuilt on every move of an object: a fast build matters more
   // than the last few percent of traversal speed, which the bottom levels decide.
   impl_->scene = new_embree_scene(RTC_BUILD_QUALITY_MEDIUM);
   impl_->motion.assign(impl_->instances.size(), {});
+  impl_->still.assign(impl_->instances.size(), nullptr);
+  // previous's Embree instance of shape `id`, when it places what this one does.
+  const auto reusable = [&](uint32_t id) -> RTCGeometry {
+    if (!previous || id >= previous->impl_->still.size()) return nullptr;
+    const Instance& a = impl_->instances[id];
+    const Instance& b = previous->impl_->instances[id];
+    return a.bvh == b.bvh && a.indirect == b.indirect && !b.moving && a.to_world.m == b.to_world.m
+               ? previous->impl_->still[id]
+               : nullptr;
+  };
   const auto attached = [&](RTCGeometry geom, uint32_t id) {
     // The first geometry of an instance goes by the instance's index; the further pieces
     // of one that is traced in pieces go by indices after the last instance.
@@ -454,14 +483,19 @@ void EmbreeScene::commit() {
       // What does not move has one time step: rays ignore their time there, and a
       // scene without moving shapes is traced exactly as without motion blur. A
       // singular placement is not traced at all (docs/architecture.md, "Singular transforms").
-      if (placeable(instance.to_world)) {
+      if (RTCGeometry shared = reusable(id)) {
+        // Committed already, with this instance's mask.
+        rtcRetainGeometry(shared);
+        rtcAttachGeometryByID(impl_->scene, shared, id);
+        impl_->still[id] = shared;
+      } else if (placeable(instance.to_world)) {
         RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(geom, instance.bvh->embree_scene());
         rtcSetGeometryTimeStepCount(geom, 1);
         const std::array<float, 12> xfm = embree_transform(instance.to_world);
         rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
         attached(geom, id);
-        rtcReleaseGeometry(geom);
+        impl_->still[id] = geom;  // our reference
       }
     } else {
       impl_->any_moving = true;

@@ -102,7 +102,17 @@ class EmbreeScene {
   uint32_t add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open, const Transform& close,
                       std::shared_ptr<const Shape> local, std::shared_ptr<const Shape> world,
                       bool indirect = true);
-  void commit();
+  // An uncommitted scene placing what the committed `other` places, for an edit that
+  // moves a few of its shapes (replace) before commit(&other).
+  static EmbreeScene with_instances_of(const EmbreeScene& other);
+  // Places shape `index` (added, not moving) anew; before commit().
+  void replace(uint32_t index, std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
+               std::shared_ptr<const Shape> world);
+  // Builds the top level. With `previous` (a committed scene, say the last compile's),
+  // an instance that places the same BVH by the same transform as previous's instance of
+  // the same index takes previous's Embree instance (Embree attaches a geometry to any
+  // number of scenes): moving one object of thousands makes one new instance.
+  void commit(const EmbreeScene* previous = nullptr);
   // Whether `other` places the same BVHs, by the same transforms, with the same
   // world shapes: then its committed top level can stand for this one.
   bool same_instances(const EmbreeScene& other) const;
@@ -146,6 +156,9 @@ class EmbreeScene {
       RTCGeometryTy* geom = nullptr;
     };
     std::vector<std::vector<MotionGeometry>> motion;
+    // The Embree instance of each shape that does not move (null for moving and
+    // unplaceable ones), held so a later top level can attach it too.
+    std::vector<RTCGeometryTy*> still;
     // The instance each further piece belongs to: Embree ids from instances.size() on.
     std::vector<uint32_t> piece_owner;
     bool any_moving = false;

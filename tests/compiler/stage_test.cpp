@@ -6,6 +6,7 @@
 #include "core/document/json_io.h"
 #include "core/film/resolve.h"
 #include "core/render/batch_render.h"
+#include "tests/support/render_helpers.h"
 
 #include <gtest/gtest.h>
 
@@ -127,13 +128,6 @@ struct Nudge {
   }
 };
 
-RgbImage render(const std::shared_ptr<const RenderScene>& scene) {
-  RenderSession session(1);
-  session.set_scene(scene);
-  render_batch(session, {1, 0.0});
-  return resolve_final(session.film(), *scene);
-}
-
 CompileCounters since(const CompileCounters& after, const CompileCounters& before) {
   CompileCounters d;
   d.compiles = after.compiles - before.compiles;
@@ -251,11 +245,10 @@ TEST_P(StageTable, EveryParameterRunsItsStageOnly) {
     expected.add(nudge.stage);
     EXPECT_EQ(incremental.changes.names(), expected.names()) << what;
     expect_only_stage_work(nudge.stage, since(compiler.counters(), before), what);
-    const RgbImage a = render(incremental.scene), b = render(fresh.scene);
-    ASSERT_EQ(a.pixels.size(), b.pixels.size()) << what;
-    size_t differing = 0;
-    for (size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
-    EXPECT_EQ(differing, 0u) << what << ": the edited scene renders otherwise than one compiled from scratch";
+    EXPECT_EQ(testing::differing_pixels(testing::render_one_pass(incremental.scene),
+                                        testing::render_one_pass(fresh.scene)),
+              0u)
+        << what << ": the edited scene renders otherwise than one compiled from scratch";
     ++tested;
   }
   EXPECT_GT(tested, 10);

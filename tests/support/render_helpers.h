@@ -3,6 +3,9 @@
 
 #include "core/render/batch_render.h"
 #include "core/compiler/compile.h"
+#include "core/film/resolve.h"
+
+#include <algorithm>
 
 #include <gtest/gtest.h>
 
@@ -32,6 +35,23 @@ inline RenderedFilm render_film(const SceneDesc& desc, int spp, AovSet aovs = {}
   r.session->set_scene(c.scene, aovs);
   render_batch(*r.session, {spp, 0.0});
   return r;
+}
+
+// One pass of a compiled scene on one thread, resolved: the same scene renders the
+// same pixels, so an incremental compile is compared with one from scratch by these.
+inline RgbImage render_one_pass(const std::shared_ptr<const RenderScene>& scene) {
+  RenderSession session(1);
+  session.set_scene(scene);
+  render_batch(session, {1, 0.0});
+  return resolve_final(session.film(), *scene);
+}
+
+// Pixels that differ between two images of one size; all of them when the sizes differ.
+inline size_t differing_pixels(const RgbImage& a, const RgbImage& b) {
+  if (a.pixels.size() != b.pixels.size()) return std::max(a.pixels.size(), b.pixels.size());
+  size_t n = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) n += a.pixels[i] != b.pixels[i];
+  return n;
 }
 
 inline SceneDesc small_scene(int width, int height) {
