@@ -1,5 +1,7 @@
 #include "core/film/film.h"
 
+#include "core/base/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -76,20 +78,34 @@ Film::Film(int width, int height, AovSet aovs, bool lines) : width_(width), heig
   }
 }
 
+namespace {
+
+// Fills a buffer in chunks across the caller's threads: a film of the full image is
+// some hundred megabytes, which one thread takes tens of milliseconds to clear.
+template <class T>
+void fill_parallel(std::vector<T>& buffer, const T& value) {
+  parallel_for_chunks(buffer.size(), size_t(1) << 16, [&](size_t begin, size_t end) {
+    std::fill(buffer.begin() + std::ptrdiff_t(begin), buffer.begin() + std::ptrdiff_t(end), value);
+  });
+}
+
+}  // namespace
+
 void Film::clear() {
-  Film fresh(width_, height_, aovs_, has_lines());
-  sum_ = std::move(fresh.sum_);
-  count_ = std::move(fresh.count_);
-  albedo_sum_ = std::move(fresh.albedo_sum_);
-  normal_sum_ = std::move(fresh.normal_sum_);
-  depth_sum_ = std::move(fresh.depth_sum_);
-  band_sum_ = std::move(fresh.band_sum_);
-  hit_count_ = std::move(fresh.hit_count_);
-  object_id_ = std::move(fresh.object_id_);
-  material_id_ = std::move(fresh.material_id_);
-  ids_mixed_ = std::move(fresh.ids_mixed_);
-  line_sum_ = std::move(fresh.line_sum_);
-  line_count_ = std::move(fresh.line_count_);
+  // In place: a film cleared for a new accumulation keeps its memory (a new one of the
+  // full image costs tens of milliseconds of page faults).
+  for (auto& sums : sum_) fill_parallel(sums, glm::dvec3(0.0));
+  for (auto& counts : count_) fill_parallel(counts, 0u);
+  fill_parallel(albedo_sum_, glm::dvec3(0.0));
+  fill_parallel(normal_sum_, glm::dvec3(0.0));
+  fill_parallel(depth_sum_, 0.0);
+  fill_parallel(band_sum_, 0.0);
+  fill_parallel(hit_count_, 0u);
+  fill_parallel(object_id_, -2);
+  fill_parallel(material_id_, -2);
+  fill_parallel(ids_mixed_, uint8_t(0));
+  fill_parallel(line_sum_, LineSums{});
+  fill_parallel(line_count_, 0u);
   nonfinite_ = 0;
 }
 

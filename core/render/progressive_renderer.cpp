@@ -14,8 +14,13 @@ namespace {
 
 // The first preview is this much coarser than the image (per axis): 1/64 of
 // the pixels, so it is ready within a UI frame or two even on one thread;
-// each following stage halves it.
+// each following stage halves it. A scene whose first preview takes longer than
+// kFirstPreviewBudgetMs starts one step coarser from then on, down to
+// kCoarsestPreviewDivisor, and one whose next step finer would take under half of it
+// one step finer.
 constexpr int kFirstPreviewDivisor = 8;
+constexpr int kCoarsestPreviewDivisor = 32;
+constexpr double kFirstPreviewBudgetMs = 8.0;
 
 AovSet aovs_for(const ViewportView& view) {
   // The selection highlight reads object ids; the denoiser's features are always kept,
@@ -205,7 +210,7 @@ void ProgressiveRenderer::run() {
       aovs_ = aovs_for(view);
       curve_.clear();
       first_publish_ = true;
-      const int divisor = region.empty() ? kFirstPreviewDivisor : 1;
+      const int divisor = region.empty() ? first_divisor_ : 1;
       session_.set_scene(scene, aovs_, divisor);
       ++accumulation_;
       base_current_ = false;
@@ -238,7 +243,9 @@ void ProgressiveRenderer::run() {
     base_current_ = false;  // the pass adds samples, finished or not
     // Only the full-resolution film samples adaptively; each preview is one pass.
     session_.set_adaptive({divisor == 1 ? limits.noise_target : 0.0, 16});
+    const auto pass_start = std::chrono::steady_clock::now();
     if (!session_.render_pass()) continue;  // cancelled: a newer request is waiting
+    if (first_publish_ && divisor > 1) adapt_first_preview(divisor, ms_since(pass_start));
     const RenderStats& stats = session_.stats();
     if (divisor == 1) curve_.push_back({stats.elapsed_seconds, stats.relative_error});
     const bool done = divisor == 1 && limits_reached(limits);
@@ -250,6 +257,16 @@ void ProgressiveRenderer::run() {
     } else if (done) {
       active_ = false;
     }
+  }
+}
+
+void ProgressiveRenderer::adapt_first_preview(int divisor, double ms) {
+  if (ms > kFirstPreviewBudgetMs && divisor < kCoarsestPreviewDivisor) {
+    first_divisor_ = divisor * 2;
+  } else if (4.0 * ms < 0.5 * kFirstPreviewBudgetMs && divisor > kFirstPreviewDivisor) {
+    // One step finer has four times the pixels: taken only while that stays well within
+    // the budget, so the divisor does not swing between two steps.
+    first_divisor_ = divisor / 2;
   }
 }
 

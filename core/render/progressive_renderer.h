@@ -116,6 +116,9 @@ class ProgressiveRenderer {
   void publish_snapshot(const std::shared_ptr<const RenderScene>& scene, const ViewportView& view,
                         const ViewportLimits& limits, bool finished);
   bool limits_reached(const ViewportLimits& limits) const;
+  // After a document's first preview, which took `ms` at `divisor`: the divisor the
+  // next document's first preview starts at (kFirstPreviewBudgetMs).
+  void adapt_first_preview(int divisor, double ms);
   // The film's mean radiance as the final image starts from: denoised when the view asks.
   RgbImage final_radiance(const ViewportView& view, bool finished, const Cancel& cancel);
 
@@ -148,6 +151,7 @@ class ProgressiveRenderer {
   uint64_t revision_ = 0;
   std::chrono::steady_clock::time_point revision_time_;
   bool first_publish_ = true, active_ = false;
+  int first_divisor_ = 8;  // the first preview's: kFirstPreviewDivisor, then adapt_first_preview's
   uint64_t accumulation_ = 0;
   // The film's image without lines (mean and painterly filter) and its lines,
   // while no sample changed since, and the settings it was filtered with: an edit

@@ -2,6 +2,7 @@
 
 #include "core/integrator/path_tracer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -59,13 +60,30 @@ void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet a
   const int width = std::max((scene_->settings.width + divisor_ - 1) / divisor_, 1);
   const int height = std::max((scene_->settings.height + divisor_ - 1) / divisor_, 1);
   lines_ = make_line_setup(*scene_, divisor_);
-  film_ = std::make_unique<Film>(width, height, aovs, lines_.active);
+  film_ = film_for(width, height, aovs, lines_.active);
   stats_ = {};
   first_pass_ = 0;
   tiles_done_.clear();
   line_pixels_.clear();
   if (lines_.active) line_pixels_.assign(size_t(width) * size_t(height), LinePixel{});
   reset_adaptive();
+}
+
+std::unique_ptr<Film> RenderSession::film_for(int width, int height, AovSet aovs, bool lines) {
+  if (film_) spare_films_.push_back(std::move(film_));
+  const auto fits = [&](const std::unique_ptr<Film>& f) {
+    return f->width() == width && f->height() == height && f->aovs().bits == aovs.bits &&
+           f->has_lines() == lines;
+  };
+  if (const auto spare = std::find_if(spare_films_.begin(), spare_films_.end(), fits);
+      spare != spare_films_.end()) {
+    std::unique_ptr<Film> film = std::move(*spare);
+    spare_films_.erase(spare);
+    film->clear();
+    return film;
+  }
+  if (spare_films_.size() > kSpareFilms) spare_films_.erase(spare_films_.begin());
+  return std::make_unique<Film>(width, height, aovs, lines);
 }
 
 void RenderSession::set_adaptive(const AdaptiveSampling& adaptive) {

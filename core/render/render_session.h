@@ -126,9 +126,18 @@ class RenderSession {
   // the active window is deciding; returns the pass it stopped at.
   uint32_t replay_decisions(uint32_t next);
 
+  // A cleared film of this size from the spares when there is one, else a new one;
+  // the film set before joins the spares. The viewport steps through the same few
+  // sizes (its previews and the image) on every edit, and a new film of the full
+  // image costs tens of milliseconds of page faults, which an edit arriving meanwhile
+  // waits for.
+  std::unique_ptr<Film> film_for(int width, int height, AovSet aovs, bool lines);
+  static constexpr size_t kSpareFilms = 5;
+
   ThreadBudget pool_;
   std::shared_ptr<const RenderScene> scene_;
   std::unique_ptr<Film> film_;
+  std::vector<std::unique_ptr<Film>> spare_films_;
   LineSetup lines_;                     // what the scene's outlines ask of every sample
   std::vector<LinePixel> line_pixels_;  // per film pixel: adaptive line sampling's state
   uint32_t first_pass_ = 0;

@@ -40,6 +40,44 @@ TEST(RenderDeterminism, SeedChangesTheNoiseOnly) {
   EXPECT_NEAR(ma.g, mb.g, 0.03f * ma.g);
 }
 
+// A session keeps the films of the sizes it stepped through and clears one when it
+// comes back to its size (RenderSession::film_for): every buffer of it must be as new.
+TEST(RenderDeterminism, AFilmUsedBeforeRendersAsANewOne) {
+  SceneDesc d = load_example("cornell_outlines.json");
+  d.render.width = 64;
+  d.render.height = 48;
+  const CompileResult compiled = compile_scene(d);
+  ASSERT_TRUE(compiled.scene);
+  AovSet aovs;
+  for (int a = 0; a < int(kAovNames.size()); ++a) aovs.add(Aov(a));
+  const auto render = [&](RenderSession& session) {
+    for (int pass = 0; pass < 3; ++pass) EXPECT_TRUE(session.render_pass());
+  };
+  RenderSession fresh(2);
+  fresh.set_scene(compiled.scene, aovs, 1);
+  render(fresh);
+  // Another scene of the same size fills every buffer of each film before: what is
+  // left of it would show in every AOV, normals included.
+  SceneDesc other = load_example("toon.json");
+  other.render.width = d.render.width;
+  other.render.height = d.render.height;
+  const CompileResult other_compiled = compile_scene(other);
+  ASSERT_TRUE(other_compiled.scene);
+  RenderSession stepped(2);
+  for (int divisor : {1, 8, 4, 2, 1, 8, 1}) {
+    stepped.set_scene(other_compiled.scene, aovs, divisor);
+    render(stepped);
+  }
+  stepped.set_scene(compiled.scene, aovs, 1);
+  render(stepped);
+  EXPECT_TRUE(stepped.film().resolve().pixels == fresh.film().resolve().pixels);
+  for (int a = 0; a < int(kAovNames.size()); ++a) {
+    SCOPED_TRACE(kAovNames[size_t(a)]);
+    EXPECT_TRUE(stepped.film().resolve_aov(Aov(a)).pixels == fresh.film().resolve_aov(Aov(a)).pixels);
+  }
+  EXPECT_EQ(stepped.stats().spp, 3u);
+}
+
 TEST(RenderDeterminism, NoNonFiniteValuesInAnyExampleScene) {
   const auto dir = std::filesystem::path(INKRAY_SOURCE_DIR) / "scenes";
   int scenes = 0;
