@@ -6,6 +6,7 @@
 //   inkray --measure-edits N [--edit KIND,...] [SCENE.json]   (edit latency, frame
 //   times and samples kept, per kind of edit)
 #include "app/cli_numbers.h"
+#include "app/cli_options.h"
 #include "app/edit_measurement.h"
 #include "app/scripted_run.h"
 #include "ui/editor_app.h"
@@ -30,6 +31,7 @@
 namespace {
 
 struct Options {
+  bool help = false;
   std::string scene;
   int threads = 0;
   int width = 1600, height = 900;
@@ -80,76 +82,84 @@ void usage() {
       "                       (screen pixels) to FILE");
 }
 
-bool parse(int argc, char** argv, Options* o) {
-  // A number in its range, or the message naming the option and what it expected.
-  const auto number = [](std::string_view option, const char* text, auto lo, auto hi, auto* out) {
-    const std::string problem = inkray::cli::read_option_number(option, text, lo, hi, out);
-    if (!problem.empty()) std::fprintf(stderr, "inkray: %s\n", problem.c_str());
-    return problem.empty();
+// The editor's options; what they mean is usage()'s.
+const std::vector<inkray::cli::Option<Options>>& editor_options() {
+  using inkray::cli::number_option, inkray::cli::text_option, inkray::cli::Range, inkray::cli::Words;
+  static const std::vector<inkray::cli::Option<Options>> table = {
+      inkray::cli::flag_option({"-h", "--help"}, &Options::help, true),
+      text_option<Options>({"--screenshot"}, [](Options& o) -> std::string& { return o.script.screenshot; }),
+      number_option<Options>(
+          {"--frames"}, [](Options& o) -> int& { return o.script.frames; }, Range<int>{0, 1000000}),
+      number_option<Options>(
+          {"--measure-edits"}, [](Options& o) -> int& { return o.script.measure_edits; },
+          Range<int>{1, 100000}),
+      {{"--edit"},
+       1,
+       [](Options& o, Words w) {
+         const std::string list(w[0]);
+         for (size_t begin = 0; begin <= list.size();) {
+           const size_t end = std::min(list.find(',', begin), list.size());
+           const std::string name = list.substr(begin, end - begin);
+           const auto& kinds = inkray::measure::kEditKindNames;
+           const auto found = std::find(kinds.begin(), kinds.end(), name);
+           if (found == kinds.end())
+             return "--edit: unknown kind \"" + name +
+                    "\" (valid kinds: " + inkray::measure::edit_kind_list() + ")";
+           o.script.edit_kinds.push_back(inkray::measure::EditKind(found - kinds.begin()));
+           begin = end + 1;
+         }
+         return std::string();
+       }},
+      number_option({"--threads"}, &Options::threads, Range<int>{1, 1024}),
+      text_option<Options>({"--select"}, [](Options& o) -> std::string& { return o.script.select; }),
+      text_option<Options>({"--node-editor"},
+                           [](Options& o) -> std::string& { return o.script.node_material; }),
+      text_option<Options>({"--node-layout"},
+                           [](Options& o) -> std::string& { return o.script.node_layout; }),
+      {{"--size"},
+       1,
+       [](Options& o, Words w) {
+         const std::string text(w[0]);
+         return std::sscanf(text.c_str(), "%dx%d", &o.width, &o.height) == 2
+                    ? std::string()
+                    : "--size: expected WIDTHxHEIGHT, got \"" + text + "\"";
+       }},
+      {{"--window-size"},
+       2,
+       [](Options& o, Words w) {
+         std::string problem = inkray::cli::read_option_number("--window-size", w[0], 64, 16384, &o.width);
+         if (problem.empty())
+           problem = inkray::cli::read_option_number("--window-size", w[1], 64, 16384, &o.height);
+         return problem;
+       }},
+      number_option({"--ui-scale"}, &Options::ui_scale, Range<float>{0.5f, 3.f}),
+      text_option<Options>({"--widget-report"},
+                           [](Options& o) -> std::string& { return o.script.widget_report; }),
+      text_option<Options>({"--export"}, [](Options& o) -> std::string& { return o.script.export_path; }),
+      text_option<Options>({"--scene-dump"}, [](Options& o) -> std::string& { return o.script.scene_dump; }),
+      text_option({"--input-script"}, &Options::input_script),
+      {{"--drop"},
+       1,
+       [](Options& o, Words w) {
+         o.script.drops.emplace_back(w[0]);
+         return std::string();
+       }},
   };
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
-    const char* v = nullptr;
-    if (a == "-h" || a == "--help") {
-      usage();
-      std::exit(0);
-    } else if (a == "--screenshot" && (v = value())) {
-      o->script.screenshot = v;
-    } else if (a == "--frames" && (v = value())) {
-      if (!number("--frames", v, 0, 1000000, &o->script.frames)) return false;
-    } else if (a == "--measure-edits" && (v = value())) {
-      if (!number("--measure-edits", v, 1, 100000, &o->script.measure_edits)) return false;
-    } else if (a == "--edit" && (v = value())) {
-      const std::string list = v;
-      for (size_t begin = 0; begin <= list.size();) {
-        const size_t end = std::min(list.find(',', begin), list.size());
-        const std::string name = list.substr(begin, end - begin);
-        const auto found =
-            std::find(inkray::measure::kEditKindNames.begin(), inkray::measure::kEditKindNames.end(), name);
-        if (found == inkray::measure::kEditKindNames.end()) {
-          std::fprintf(stderr, "inkray: --edit: unknown kind \"%s\" (valid kinds: %s)\n", name.c_str(),
-                       inkray::measure::edit_kind_list().c_str());
-          std::exit(2);
-        }
-        o->script.edit_kinds.push_back(
-            inkray::measure::EditKind(found - inkray::measure::kEditKindNames.begin()));
-        begin = end + 1;
-      }
-    } else if (a == "--threads" && (v = value())) {
-      if (!number("--threads", v, 1, 1024, &o->threads)) return false;
-    } else if (a == "--select" && (v = value())) {
-      o->script.select = v;
-    } else if (a == "--node-editor" && (v = value())) {
-      o->script.node_material = v;
-    } else if (a == "--node-layout" && (v = value())) {
-      o->script.node_layout = v;
-    } else if (a == "--size" && (v = value())) {
-      if (std::sscanf(v, "%dx%d", &o->width, &o->height) != 2) return false;
-    } else if (a == "--window-size" && i + 2 < argc) {
-      if (!number("--window-size", argv[++i], 64, 16384, &o->width) ||
-          !number("--window-size", argv[++i], 64, 16384, &o->height))
-        return false;
-    } else if (a == "--ui-scale" && (v = value())) {
-      if (!number("--ui-scale", v, 0.5f, 3.f, &o->ui_scale)) return false;
-    } else if (a == "--widget-report" && (v = value())) {
-      o->script.widget_report = v;
-    } else if (a == "--export" && (v = value())) {
-      o->script.export_path = v;
-    } else if (a == "--scene-dump" && (v = value())) {
-      o->script.scene_dump = v;
-    } else if (a == "--input-script" && (v = value())) {
-      o->input_script = v;
-    } else if (a == "--drop" && (v = value())) {
-      o->script.drops.emplace_back(v);
-    } else if (!a.empty() && a[0] != '-' && o->scene.empty()) {
-      o->scene = a;
-    } else {
-      std::fprintf(stderr, "inkray: unknown or incomplete argument \"%s\"\n", a.c_str());
-      return false;
-    }
-  }
-  return true;
+  return table;
+}
+
+// Reads the command line; false after printing what was wrong.
+bool parse(int argc, char** argv, Options* o) {
+  const std::string problem = inkray::cli::parse_options<Options>(
+      editor_options(), argc, argv, *o, [](Options& opts, std::string_view arg) {
+        if (!opts.scene.empty())
+          return "unexpected argument \"" + std::string(arg) + "\": only one scene is opened";
+        opts.scene = std::string(arg);
+        return std::string();
+      });
+  if (problem.empty()) return true;
+  std::fprintf(stderr, "inkray: %s\n", problem.c_str());
+  return false;
 }
 
 // The monitor's scale: GLFW's content scale where the desktop sets one (Xft.dpi, Wayland,
@@ -194,6 +204,10 @@ int main(int argc, char** argv) {
   if (!parse(argc, argv, &opt)) {
     usage();
     return 2;
+  }
+  if (opt.help) {
+    usage();
+    return 0;
   }
   glfwSetErrorCallback(
       [](int code, const char* text) { std::fprintf(stderr, "glfw error %d: %s\n", code, text); });

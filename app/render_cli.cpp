@@ -1,6 +1,7 @@
 #include "app/render_cli.h"
 
 #include "app/cli_numbers.h"
+#include "app/cli_options.h"
 #include "core/film/film.h"
 #include "core/image/image_io.h"
 #include "core/io/output_set.h"
@@ -249,163 +250,134 @@ std::filesystem::path checkpoint_path(const std::filesystem::path& output) {
   return output.string() + ".checkpoint.exr";
 }
 
+namespace {
+
+using Options = RenderCliOptions;
+using cli::Words;
+
+// An option whose one word is a decimal number `ok` accepts, else `expected` is the message.
+cli::Option<Options> decimal_option(std::string_view name, std::optional<double> Options::*member,
+                                    bool (*ok)(double), std::string_view expected) {
+  return {{name}, 1, [=](Options& o, Words w) {
+            double value = 0.0;
+            if (!parse_number(w[0], &value) || !ok(value))
+              return std::string(name) + ": expected " + std::string(expected) + ", got \"" +
+                     std::string(w[0]) + "\"";
+            o.*member = value;
+            return std::string();
+          }};
+}
+
+// inkray-render's options; what they mean is kRenderCliHelp's. The ranges of --spp,
+// --width, --height, --seed and --time are those of render.spp, .width, .height, .seed
+// and .time_limit in RenderSettings' parameter table.
+const std::vector<cli::Option<Options>>& render_options() {
+  using cli::number_option, cli::param_range, cli::text_option, cli::flag_option;
+  static const std::vector<cli::Option<Options>> table = {
+      flag_option({"-h", "--help"}, &Options::help, true),
+      flag_option({"--node-reference"}, &Options::node_reference, true),
+      flag_option({"-q", "--quiet"}, &Options::quiet),
+      text_option({"-o", "--output"}, &Options::output),
+      text_option({"--write-scene"}, &Options::write_scene),
+      number_option({"--spp"}, &Options::spp, param_range<int>(&RenderSettings::spp)),
+      flag_option({"--denoise"}, &Options::denoise),
+      decimal_option(
+          "--noise-threshold", &Options::noise_threshold, [](double t) { return t > 0.0 && t <= 10.0; },
+          "a relative error in (0, 10], e.g. 0.01"),
+      number_option({"--min-spp"}, &Options::min_spp, cli::Range<int>{2, 1 << 20}),
+      number_option({"--threads"}, &Options::threads, cli::Range<int>{1, 1024}),
+      number_option({"--width"}, &Options::width, param_range<int>(&RenderSettings::width)),
+      number_option({"--height"}, &Options::height, param_range<int>(&RenderSettings::height)),
+      number_option({"--seed"}, &Options::seed, param_range<int>(&RenderSettings::seed)),
+      decimal_option(
+          "--time", &Options::time_seconds,
+          [](double t) {
+            const auto r = param_range<double>(&RenderSettings::time_limit);
+            return t >= r.lo && t <= r.hi;
+          },
+          "seconds in [0, 1e7]"),
+      {{"--memory-limit"},
+       1,
+       [](Options& o, Words w) {
+         o.memory_limit = parse_size(w[0]);
+         return o.memory_limit
+                    ? std::string()
+                    : "--memory-limit: expected a size such as 8G, 512M or 1000000000 (bytes), got \"" +
+                          std::string(w[0]) + "\"";
+       }},
+      {{"--aov"},
+       1,
+       [](Options& o, Words w) {
+         const std::string_view v = w[0];
+         const size_t eq = v.find('=');
+         const std::string_view name = v.substr(0, eq);
+         if ((eq != std::string_view::npos && eq + 1 == v.size()) || !aov_from_name(name))
+           return "--aov: expected NAME=FILE with NAME one of " + aov_name_list() + "; got \"" +
+                  std::string(v) + "\"";
+         o.aovs.push_back(
+             {std::string(name), eq == std::string_view::npos ? "" : std::string(v.substr(eq + 1))});
+         return std::string();
+       }},
+      {{"--samples"},
+       2,
+       [](Options& o, Words w) {
+         int a = 0, b = 0;
+         for (std::string problem : {cli::read_option_number("--samples", w[0], 0, 1 << 20, &a),
+                                     cli::read_option_number("--samples", w[1], 1, 1 << 20, &b)})
+           if (!problem.empty()) return problem;
+         if (b <= a)
+           return "--samples A B: B must be above A (samples A to B, B excluded), got " + std::to_string(a) +
+                  " " + std::to_string(b);
+         o.samples = {uint32_t(a), uint32_t(b)};
+         return std::string();
+       }},
+      {{"--crop"},
+       4,
+       [](Options& o, Words w) {
+         int c[4];
+         for (int k = 0; k < 4; ++k)
+           if (std::string problem = cli::read_option_number("--crop", w[size_t(k)], 0, 16384, &c[k]);
+               !problem.empty())
+             return problem;
+         if (c[2] <= c[0] || c[3] <= c[1])
+           return "--crop X0 Y0 X1 Y1: the window needs X1 > X0 and Y1 > Y0 (X1, Y1 excluded), got " +
+                  std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]) + " " +
+                  std::to_string(c[3]);
+         o.crop = PixelWindow{c[0], c[1], c[2], c[3]};
+         return std::string();
+       }},
+      decimal_option(
+          "--checkpoint", &Options::checkpoint_minutes, [](double m) { return m > 0.0 && m <= 1e6; },
+          "minutes above 0"),
+      flag_option({"--resume"}, &Options::resume),
+      text_option({"--decide-lines"}, &Options::decide_lines),
+      text_option({"--line-decisions"}, &Options::line_decisions),
+      {{"--frames"},
+       1,
+       [](Options& o, Words w) {
+         o.frames = parse_frame_range(w[0]);
+         return o.frames ? std::string()
+                         : "--frames: expected FIRST-LAST[:STEP] (LAST not below FIRST, STEP at least 1), a "
+                           "frame or \"all\"; got \"" +
+                               std::string(w[0]) + "\"";
+       }},
+  };
+  return table;
+}
+
+}  // namespace
+
 std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* argv, std::string* error) {
   RenderCliOptions o;
-  auto value_of = [&](int& i, std::string_view flag) -> std::optional<std::string_view> {
-    if (i + 1 >= argc) {
-      *error = std::string(flag) + ": missing value";
-      return std::nullopt;
-    }
-    return std::string_view(argv[++i]);
-  };
-  auto int_option = [&](int& i, std::string_view flag, long lo, long hi, std::optional<int>* out) {
-    const auto v = value_of(i, flag);
-    if (!v) return false;
-    long n = 0;
-    if (!parse_number(*v, &n) || n < lo || n > hi) {
-      *error = std::string(flag) + ": expected an integer in [" + std::to_string(lo) + ", " +
-               std::to_string(hi) + "], got \"" + std::string(*v) + "\"";
-      return false;
-    }
-    *out = int(n);
-    return true;
-  };
-
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    if (arg == "-h" || arg == "--help") {
-      o.help = true;
-      return o;
-    } else if (arg == "--node-reference") {
-      o.node_reference = true;
-      return o;
-    } else if (arg == "-q" || arg == "--quiet") {
-      o.quiet = true;
-    } else if (arg == "-o" || arg == "--output") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      o.output = std::string(*v);
-    } else if (arg == "--write-scene") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      o.write_scene = std::string(*v);
-    } else if (arg == "--spp") {
-      if (!int_option(i, arg, 1, 1 << 20, &o.spp)) return std::nullopt;
-    } else if (arg == "--denoise") {
-      o.denoise = true;
-    } else if (arg == "--noise-threshold") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      double t = 0.0;
-      if (!parse_number(*v, &t) || !(t > 0.0) || t > 10.0) {
-        *error = "--noise-threshold: expected a relative error in (0, 10], e.g. 0.01, got \"" +
-                 std::string(*v) + "\"";
-        return std::nullopt;
-      }
-      o.noise_threshold = t;
-    } else if (arg == "--min-spp") {
-      if (!int_option(i, arg, 2, 1 << 20, &o.min_spp)) return std::nullopt;
-    } else if (arg == "--threads") {
-      if (!int_option(i, arg, 1, 1024, &o.threads)) return std::nullopt;
-    } else if (arg == "--width") {
-      if (!int_option(i, arg, 1, 16384, &o.width)) return std::nullopt;
-    } else if (arg == "--height") {
-      if (!int_option(i, arg, 1, 16384, &o.height)) return std::nullopt;
-    } else if (arg == "--seed") {
-      if (!int_option(i, arg, 0, 2147483647, &o.seed)) return std::nullopt;
-    } else if (arg == "--time") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      double t = 0.0;
-      if (!parse_number(*v, &t) || t < 0.0 || t > 1e7) {
-        *error = "--time: expected seconds in [0, 1e7], got \"" + std::string(*v) + "\"";
-        return std::nullopt;
-      }
-      o.time_seconds = t;
-    } else if (arg == "--memory-limit") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      o.memory_limit = parse_size(*v);
-      if (!o.memory_limit) {
-        *error = "--memory-limit: expected a size such as 8G, 512M or 1000000000 (bytes), got \"" +
-                 std::string(*v) + "\"";
-        return std::nullopt;
-      }
-    } else if (arg == "--aov") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      const size_t eq = v->find('=');
-      const std::string_view name = v->substr(0, eq);
-      if ((eq != std::string_view::npos && eq + 1 == v->size()) || !aov_from_name(name)) {
-        *error = "--aov: expected NAME=FILE with NAME one of " + aov_name_list() + "; got \"" +
-                 std::string(*v) + "\"";
-        return std::nullopt;
-      }
-      o.aovs.push_back(
-          {std::string(name), eq == std::string_view::npos ? "" : std::string(v->substr(eq + 1))});
-    } else if (arg == "--samples") {
-      int a = 0, b = 0;
-      std::optional<int> value;
-      if (!int_option(i, arg, 0, 1 << 20, &value)) return std::nullopt;
-      a = *value;
-      if (!int_option(i, arg, 1, 1 << 20, &value)) return std::nullopt;
-      b = *value;
-      if (b <= a) {
-        *error = "--samples A B: B must be above A (samples A to B, B excluded), got " + std::to_string(a) +
-                 " " + std::to_string(b);
-        return std::nullopt;
-      }
-      o.samples = {uint32_t(a), uint32_t(b)};
-    } else if (arg == "--crop") {
-      int c[4];
-      for (int k = 0; k < 4; ++k) {
-        std::optional<int> value;
-        if (!int_option(i, arg, 0, 16384, &value)) return std::nullopt;
-        c[k] = *value;
-      }
-      if (c[2] <= c[0] || c[3] <= c[1]) {
-        *error = "--crop X0 Y0 X1 Y1: the window needs X1 > X0 and Y1 > Y0 (X1, Y1 excluded), got " +
-                 std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]) + " " +
-                 std::to_string(c[3]);
-        return std::nullopt;
-      }
-      o.crop = PixelWindow{c[0], c[1], c[2], c[3]};
-    } else if (arg == "--checkpoint") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      double m = 0.0;
-      if (!parse_number(*v, &m) || m <= 0.0 || m > 1e6) {
-        *error = "--checkpoint: expected minutes above 0, got \"" + std::string(*v) + "\"";
-        return std::nullopt;
-      }
-      o.checkpoint_minutes = m;
-    } else if (arg == "--resume") {
-      o.resume = true;
-    } else if (arg == "--decide-lines" || arg == "--line-decisions") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      (arg == "--decide-lines" ? o.decide_lines : o.line_decisions) = std::string(*v);
-    } else if (arg == "--frames") {
-      const auto v = value_of(i, arg);
-      if (!v) return std::nullopt;
-      o.frames = parse_frame_range(*v);
-      if (!o.frames) {
-        *error =
-            "--frames: expected FIRST-LAST[:STEP] (LAST not below FIRST, STEP at least 1), a frame or "
-            "\"all\"; got \"" +
-            std::string(*v) + "\"";
-        return std::nullopt;
-      }
-    } else if (!arg.empty() && arg[0] == '-') {
-      *error = "unknown option \"" + std::string(arg) + "\" (see --help)";
-      return std::nullopt;
-    } else if (o.scene.empty()) {
-      o.scene = std::string(arg);
-    } else {
-      *error = "unexpected argument \"" + std::string(arg) + "\": only one scene file is rendered";
-      return std::nullopt;
-    }
-  }
+  *error =
+      cli::parse_options<Options>(render_options(), argc, argv, o, [](Options& opts, std::string_view arg) {
+        if (!opts.scene.empty())
+          return "unexpected argument \"" + std::string(arg) + "\": only one scene file is rendered";
+        opts.scene = std::string(arg);
+        return std::string();
+      });
+  if (!error->empty()) return std::nullopt;
+  if (o.help || o.node_reference) return o;
   if (o.scene.empty()) {
     *error = "no scene file given (usage: inkray-render SCENE.json -o OUT.png; see --help)";
     return std::nullopt;

@@ -232,6 +232,12 @@ TEST_F(InkrayRender, BadArgumentsGiveOneLineAndExitTwo) {
         Case{scene("cornell.json") + png + " --spp 0", "--spp: expected an integer in [1, 1048576]"},
         Case{scene("cornell.json") + png + " --spp 12x", "got \"12x\""},
         Case{scene("cornell.json") + png + " --threads", "--threads: missing value"},
+        // The ranges of options that set a render setting are its parameter's (RenderSettings).
+        Case{scene("cornell.json") + png + " --width 16385", "--width: expected an integer in [1, 16384]"},
+        Case{scene("cornell.json") + png + " --seed -1", "--seed: expected an integer in [0, 2147483647]"},
+        Case{scene("cornell.json") + " --samples 4 2 -o p.exr", "B must be above A"},
+        Case{scene("cornell.json") + png + " --crop 0 0 10", "--crop: missing value"},
+        Case{scene("cornell.json") + " " + scene("toon.json") + png, "only one scene file is rendered"},
         Case{scene("cornell.json") + png + " --time -1", "--time: expected seconds"},
         Case{scene("cornell.json") + png + " --aov colour=a.png", "--aov: expected NAME=FILE"},
         Case{scene("cornell.json") + png + " --frobnicate", "unknown option \"--frobnicate\""},
