@@ -5,6 +5,7 @@
 #include "core/document/edit_checks.h"
 #include "core/document/json_io.h"
 #include "core/document/scene_checks.h"
+#include "tests/support/breaking_edits.h"
 
 #include <gtest/gtest.h>
 
@@ -19,16 +20,9 @@ namespace inkray {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::vector<fs::path> shipped_scenes() {
-  std::vector<fs::path> files;
-  for (const fs::path& dir : {fs::path(INKRAY_SOURCE_DIR) / "scenes",
-                              fs::path(INKRAY_SOURCE_DIR) / "tests" / "data" / "scenes" / "valid"})
-    for (const auto& entry : fs::directory_iterator(dir))
-      if (entry.path().extension() == ".json") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+using testing::breaking_edits;
+using testing::NamedEdit;
+using testing::shipped_scenes;
 
 // problems_added as it would be with every item checked.
 std::vector<std::string> added_by_whole_checks(const SceneDesc& before, const SceneDesc& after) {
@@ -46,59 +40,6 @@ std::vector<std::string> added_by_whole_checks(const SceneDesc& before, const Sc
 std::vector<std::string> sorted(std::vector<std::string> v) {
   std::sort(v.begin(), v.end());
   return v;
-}
-
-struct NamedEdit {
-  std::string what;
-  std::function<void(SceneDesc&)> apply;
-};
-
-// Edits that keep every name and each break one check of one item (or of the whole
-// document), for the first few items of each list.
-std::vector<NamedEdit> breaking_edits(const SceneDesc& scene) {
-  std::vector<NamedEdit> edits;
-  const size_t most = 12;
-  for (size_t i = 0; i < std::min(scene.objects.size(), most); ++i) {
-    edits.push_back({"objects[" + std::to_string(i) + "].material dangling",
-                     [i](SceneDesc& s) { s.objects[i].material = "no such material"; }});
-    edits.push_back({"objects[" + std::to_string(i) + "].material empty",
-                     [i](SceneDesc& s) { s.objects[i].material.clear(); }});
-    edits.push_back({"objects[" + std::to_string(i) + "] a missing mesh",
-                     [i](SceneDesc& s) { s.objects[i].shape = MeshDesc{"no/such/mesh.obj"}; }});
-    edits.push_back({"objects[" + std::to_string(i) + "] moved",
-                     [i](SceneDesc& s) { s.objects[i].transform.translate += Vec3(0.5f, 0.f, 0.f); }});
-  }
-  for (size_t i = 0; i < std::min(scene.materials.size(), most); ++i) {
-    edits.push_back({"materials[" + std::to_string(i) + "] a mix of itself", [i](SceneDesc& s) {
-                       s.materials[i].data = MixDesc{s.materials[i].name, s.materials[i].name};
-                     }});
-    edits.push_back({"materials[" + std::to_string(i) + "] a mix of nothing", [i](SceneDesc& s) {
-                       s.materials[i].data = MixDesc{"", "nothing"};
-                     }});
-    edits.push_back({"materials[" + std::to_string(i) + "] a missing texture", [i](SceneDesc& s) {
-                       s.materials[i].data = DiffuseDesc{ImageTextureDesc{"no/such/image.png"}};
-                     }});
-  }
-  for (size_t i = 0; i < std::min(scene.lights.size(), most); ++i) {
-    edits.push_back({"lights[" + std::to_string(i) + "] a spot at its target", [i](SceneDesc& s) {
-                       SpotLightDesc spot;
-                       spot.target = spot.position;
-                       s.lights[i].data = spot;
-                     }});
-  }
-  for (size_t i = 0; i < std::min(scene.strokes.size(), most); ++i) {
-    edits.push_back({"strokes[" + std::to_string(i) + "] on nothing",
-                     [i](SceneDesc& s) { s.strokes[i].object = "nobody"; }});
-    edits.push_back({"strokes[" + std::to_string(i) + "] widths crossed",
-                     [i](SceneDesc& s) { s.strokes[i].width_min = s.strokes[i].width_max + 1.f; }});
-    edits.push_back({"strokes[" + std::to_string(i) + "] an image brush with no image", [i](SceneDesc& s) {
-                       s.strokes[i].brush = BrushKind::image;
-                       s.strokes[i].brush_image.clear();
-                     }});
-  }
-  edits.push_back({"camera looking at its eye", [](SceneDesc& s) { s.camera.look_at = s.camera.look_from; }});
-  edits.push_back({"frames reversed", [](SceneDesc& s) { s.render.frame_end = s.render.frame_start - 1; }});
-  return edits;
 }
 
 TEST(ScopedChecks, FindWhatWholeChecksFindOverEveryScene) {
