@@ -162,7 +162,7 @@ LineSetup make_line_setup(const RenderScene& scene, int divisor) {
   const float footprint =
       rs.filter == PixelFilter::box ? 2.f * rs.filter_radius : rs.filter_radius / 3.f * std::sqrt(12.f);
   s.film_pixel = std::max(footprint, 1e-3f) * float(std::max(divisor, 1));
-  s.max_blur = kIncoherentSpread * s.nominal_radius_px * s.pixel_angle;
+  s.follow = {o.in_reflections, kIncoherentSpread * s.nominal_radius_px * s.pixel_angle};
   s.at_width = make_stencil(s, s.width_px);
   return s;
 }
@@ -174,7 +174,7 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
   out.rays = float(draw.count);
   if (draw.count <= 0) return out;
   const PerceivedSurface centre =
-      find_perceived_surface(scene, centre_ray, u_mix, setup.max_blur, rays, &primary);
+      find_perceived_surface(scene, centre_ray, u_mix, setup.follow, rays, &primary);
   if (centre.lost || (centre.hit && scene.objects[centre.object].lines.exclude)) return out;
   const float width_px = sample_width_px(scene, setup, camera, centre, centre_ray.d);
   const Stencil stencil = width_px == setup.width_px ? setup.at_width : make_stencil(setup, width_px);
@@ -199,7 +199,7 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
     // At the sample's instant: the stencil sees what its centre sees, so the lines
     // of a moving object blur with it instead of breaking.
     const Ray ray = camera.generate_ray(film_pos + offset, lens, centre_ray.time);
-    const PerceivedSurface s = find_perceived_surface(scene, ray, u_mix, setup.max_blur, rays);
+    const PerceivedSurface s = find_perceived_surface(scene, ray, u_mix, setup.follow, rays);
     if (s.lost || (s.hit && scene.objects[s.object].lines.exclude)) continue;
     const uint32_t found = breaks(centre, s, setup, occlusion_jump) & wanted;
     if (!found) continue;

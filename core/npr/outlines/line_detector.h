@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/npr/outlines/line_types.h"
+#include "core/npr/outlines/perceived_surface.h"
 #include "core/integrator/path_tracer.h"
 #include "core/sampling/sampler.h"
 #include "core/world/render_scene.h"
@@ -47,7 +48,7 @@ struct LineSetup {
   float depth_jump = 0.f;   // relative distance jump of depth lines
   float pixel_angle = 0.f;  // radians per pixel of the full image at its centre
   float film_pixel = 1.f;   // width of a film pixel's sample footprint, in full-image pixels
-  float max_blur = 0.f;     // roughness blur, radians, beyond which mirrors and glass are not followed
+  FollowLimits follow;      // how far lines are followed through mirrors and glass
   // The stencil of samples at width_px, the usual case: only world widths,
   // falloff and width overrides make their own.
   Stencil at_width;

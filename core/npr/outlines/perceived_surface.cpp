@@ -51,10 +51,11 @@ std::optional<Continuation> continue_through(const Material& material, const Sur
 
 }  // namespace
 
-PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float u_mix, float max_blur,
-                                        uint32_t* rays, const PrimaryHit* first) {
+PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float u_mix,
+                                        const FollowLimits& limits, uint32_t* rays, const PrimaryHit* first) {
   PerceivedSurface out;
-  const bool follow = scene.outlines.in_reflections;
+  const bool follow = limits.specular;
+  const float max_blur = limits.max_blur;
   for (int chain = 0; chain <= kMaxPerceivedChain; ++chain) {
     // The centre ray's hit is the camera sample's own; other rays trace theirs.
     SurfaceInteraction traced;

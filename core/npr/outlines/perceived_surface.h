@@ -48,11 +48,19 @@ struct PerceivedSurface {
   float blur = 0.f;  // angular blur of the rough vertices followed, radians
 };
 
+// How far lines are followed through mirrors and glass, as the compiled line setup
+// has it (LineSetup::follow).
+struct FollowLimits {
+  bool specular = true;  // outlines.in_reflections: follow mirrors and glass at all
+  float max_blur = 0.f;  // roughness blur, radians, beyond which mirrors and glass are not followed
+};
+
 // Follows at most kMaxPerceivedChain specular vertices; u_mix resolves mix
 // materials. `first`, when given, is the ray's own intersection, already
 // traced. Rough mirrors and glass are followed while the chain's blur stays
-// within max_blur radians. Adds the rays it traced to *rays.
-PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float u_mix, float max_blur,
-                                        uint32_t* rays, const PrimaryHit* first = nullptr);
+// within follow.max_blur radians. Adds the rays it traced to *rays.
+PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float u_mix,
+                                        const FollowLimits& follow, uint32_t* rays,
+                                        const PrimaryHit* first = nullptr);
 
 }  // namespace inkray
