@@ -79,7 +79,8 @@ std::unique_ptr<Film> RenderSession::film_for(int width, int height, AovSet aovs
       spare != spare_films_.end()) {
     std::unique_ptr<Film> film = std::move(*spare);
     spare_films_.erase(spare);
-    film->clear();
+    // Within the session's threads, as everything it runs (core/base/parallel.h).
+    pool_.run([&] { film->clear(); });
     return film;
   }
   if (spare_films_.size() > kSpareFilms) spare_films_.erase(spare_films_.begin());
