@@ -19,17 +19,29 @@ namespace {
 // ribbons and brush depend only on the emitter's shape parameters, its object's
 // shape and placement and the scene's folder, so they are kept in the asset
 // cache and an edit elsewhere in the document (a material, a light, the
-// outlines) does not regrow them. The painted mesh is cached too, under the
-// colours' own inputs: the object's material and the emitter's colour jitter.
+// outlines) does not regrow them. Another paint is cached too, under the colours'
+// own inputs (the object's material and the emitter's colour jitter): a colour per
+// stroke (MeshPaint), which hits read in place of the mesh's vertex colours.
 struct StrokeShape {
   std::vector<SurfacePoint> roots;
   std::vector<uint32_t> first_vertex;  // stroke i owns vertices [first_vertex[i], first_vertex[i + 1])
+  std::shared_ptr<const std::vector<uint32_t>> stroke_of_triangle;
   // The ribbons with the brush's alpha test. Its mesh is painted as painted_key
-  // says (the paint of its first compile), and serves as the painted mesh while
-  // that paint holds: most compiles copy nothing.
+  // says (the paint of its first compile): while that paint holds, no MeshPaint.
   std::shared_ptr<const ShapeBvh> bvh;
   std::string painted_key;
 };
+
+// The stroke each triangle of a stroke mesh belongs to: the one owning its first vertex.
+std::shared_ptr<const std::vector<uint32_t>> stroke_of_triangle(const TriangleMesh& mesh,
+                                                                const std::vector<uint32_t>& first_vertex) {
+  auto strokes = std::make_shared<std::vector<uint32_t>>(mesh.triangle_count());
+  for (size_t t = 0; t < strokes->size(); ++t) {
+    const auto owner = std::upper_bound(first_vertex.begin(), first_vertex.end(), mesh.indices[3 * t]);
+    (*strokes)[t] = uint32_t(std::max<std::ptrdiff_t>(owner - first_vertex.begin() - 1, 0));
+  }
+  return strokes;
+}
 
 struct BuiltStrokes {
   const StrokeEmitterDesc* emitter = nullptr;
@@ -131,6 +143,7 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
     mask->paint = true;  // its object casts the shadow; the later stroke lies on top
     mask->quads = true;  // stroke_mesh.h: cells of two triangles
     shape->first_vertex = std::move(geometry.first_vertex);
+    shape->stroke_of_triangle = stroke_of_triangle(geometry.mesh, shape->first_vertex);
     shape->painted_key = built.key + "|" + paint_key(desc, e, scene.material_names[base.material]);
     shape->bvh = std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(geometry.mesh)),
                                                   std::move(mask));
@@ -170,22 +183,23 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
     const uint32_t base_material = scene.objects[b.base_object].material;
     scene.objects.push_back(std::move(object));
     const std::string key = b.key + "|" + paint_key(desc, *b.emitter, scene.material_names[base_material]);
-    std::shared_ptr<const Shape> painted;
-    if (key == b.shape->painted_key) painted = b.shape->bvh->shared_shape();
-    if (!painted) painted = build.assets.find<Shape>(key);
-    if (!painted) {
-      const std::vector<Color> colors = stroke_colors(scene.materials, base_material, b.shape->roots,
-                                                      *b.emitter, anchors[b.base_object].to_object);
-      TriangleMesh mesh = std::get<TriangleMesh>(b.shape->bvh->shape());
-      const std::vector<uint32_t>& first = b.shape->first_vertex;
-      for (size_t i = 0; i < colors.size(); ++i)
-        std::fill(mesh.colors.begin() + std::ptrdiff_t(first[i]),
-                  mesh.colors.begin() + std::ptrdiff_t(first[i + 1]), colors[i]);
-      painted = build.assets.keep<Shape>(key, std::make_shared<const Shape>(std::move(mesh)));
-      ++build.counters.stroke_paints;
+    std::shared_ptr<const MeshPaint> paint;
+    if (key != b.shape->painted_key) {
+      const std::string paint_entry = key + "|paint";
+      paint = build.assets.find<MeshPaint>(paint_entry);
+      if (!paint) {
+        paint = build.assets.keep<MeshPaint>(
+            paint_entry,
+            std::make_shared<const MeshPaint>(MeshPaint{
+                b.shape->stroke_of_triangle, stroke_colors(scene.materials, base_material, b.shape->roots,
+                                                           *b.emitter, anchors[b.base_object].to_object)}));
+        ++build.counters.stroke_paints;
+      }
     }
-    // The painted mesh is what hits read (its vertex colours); the ribbons' BVH
-    // traces it, unchanged by a repaint. Strokes lie where they grew: in world space.
+    // The ribbons' mesh is what hits read, in the paint of their first compile or in
+    // `paint`; their BVH traces it, unchanged by a repaint. Strokes lie where they
+    // grew: in world space.
+    const std::shared_ptr<const Shape>& painted = b.shape->bvh->shared_shape();
     const Transform& move = anchor.rest_to_now;
     if (anchor.moving) {
       // Paint on an object that moves while the shutter is open moves with it: the
@@ -194,24 +208,24 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
       // the painted mesh there; shape() reads the strokes where the frame has them.
       std::shared_ptr<const Shape> at_frame = painted;
       if (!move.is_identity()) {
-        const std::string placed_key = key + "|placed|" + param_key(move.m);
+        const std::string placed_key = b.key + "|placed|" + param_key(move.m);
         at_frame = build.assets.find<Shape>(placed_key);
         if (!at_frame)
           at_frame = build.assets.keep<Shape>(
               placed_key, std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(*painted), move)));
       }
       scene.geometry.add_moving(b.shape->bvh, anchor.rest_to_open, anchor.rest_to_close, painted, at_frame,
-                                b.emitter->indirect);
+                                b.emitter->indirect, paint);
       continue;
     }
     if (move.is_identity()) {
-      scene.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect);
+      scene.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect, paint);
       continue;
     }
     // An object that moved since its rest carries its strokes along: the ribbons are
     // placed where it is now, in world space like every paint (the paint query reads
     // paint BVHs directly), and traced by a BVH of their own.
-    const std::string moved_key = key + "|moved|" + param_key(move.m);
+    const std::string moved_key = b.key + "|moved|" + param_key(move.m);
     auto moved = build.assets.find<ShapeBvh>(moved_key);
     if (!moved) {
       TriangleMesh mesh = std::get<TriangleMesh>(*painted);
@@ -227,7 +241,7 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
           std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(mesh)), std::move(mask)));
       ++build.counters.shape_bvhs;
     }
-    scene.geometry.add(moved, Transform{}, moved->shared_shape(), b.emitter->indirect);
+    scene.geometry.add(moved, Transform{}, moved->shared_shape(), b.emitter->indirect, paint);
   }
 }
 

@@ -115,6 +115,15 @@ struct QueryContext {
   uint32_t instance_of(uint32_t id) const { return id < first_piece ? id : piece_owner[id - first_piece]; }
 };
 
+// The closest hit over the main top level and, when some shapes were placed anew
+// since it was built, the second one (EmbreeScene::commit): the second sees the ray
+// shortened to the first's hit, so it reports only a nearer one.
+template <class Impl>
+void intersect_top_levels(const Impl& impl, QueryContext& context, RTCRayHit& rh) {
+  rtcIntersect1(impl.scene, &context.rtc, &rh);
+  if (impl.live_scene) rtcIntersect1(impl.live_scene, &context.rtc, &rh);
+}
+
 // The triangle and its barycentrics at (u, v) of quad q (AlphaMask::quads):
 // Embree splits the quad (v0, v1, v2, v3) into (v0, v1, v3) and (v2, v3, v1)
 // and reports the second's hits as (1 - u', 1 - v').
@@ -396,6 +405,7 @@ EmbreeScene::Impl::~Impl() {
   for (RTCGeometry geom : still)
     if (geom) rtcReleaseGeometry(geom);
   if (scene) rtcReleaseScene(scene);
+  if (live_scene) rtcReleaseScene(live_scene);
 }
 
 EmbreeScene::EmbreeScene() : impl_(std::make_shared<Impl>()) {}
@@ -411,9 +421,11 @@ uint32_t EmbreeScene::add(TriangleMesh mesh, std::shared_ptr<const AlphaMask> ma
 }
 
 uint32_t EmbreeScene::add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
-                          std::shared_ptr<const Shape> world, bool indirect) {
+                          std::shared_ptr<const Shape> world, bool indirect,
+                          std::shared_ptr<const MeshPaint> paint) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::add after commit");
   impl_->instances.push_back({std::move(bvh), to_world, std::move(world), indirect});
+  impl_->instances.back().paint = std::move(paint);
   return uint32_t(impl_->instances.size() - 1);
 }
 
@@ -431,25 +443,64 @@ void EmbreeScene::replace(uint32_t index, std::shared_ptr<const ShapeBvh> bvh, c
   instance.bvh = std::move(bvh);
   instance.to_world = to_world;
   instance.world = std::move(world);
+  instance.paint = nullptr;
 }
 
 uint32_t EmbreeScene::add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open,
                                  const Transform& close, std::shared_ptr<const Shape> local,
-                                 std::shared_ptr<const Shape> world, bool indirect) {
+                                 std::shared_ptr<const Shape> world, bool indirect,
+                                 std::shared_ptr<const MeshPaint> paint) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::add_moving after commit");
-  Instance instance{std::move(bvh), open, std::move(world), indirect, true, close, std::move(local)};
+  Instance instance{std::move(bvh), open,  std::move(world), indirect,
+                    true,           close, std::move(local), std::move(paint)};
   if (!instance.local) instance.local = instance.bvh->shared_shape();
   impl_->instances.push_back(std::move(instance));
   return uint32_t(impl_->instances.size() - 1);
+}
+
+EmbreeScene::TopLevels EmbreeScene::split_top_levels(const EmbreeScene* previous) const {
+  // Only still shapes, the same number of them: what an edit that moves a few objects makes.
+  if (!previous || previous->impl_->instances.size() != impl_->instances.size() ||
+      previous->impl_->any_moving)
+    return {};
+  const auto& now = impl_->instances;
+  const auto& before = previous->impl_->instances;
+  if (std::any_of(now.begin(), now.end(), [](const Instance& i) { return i.moving; })) return {};
+  // The shapes placed anew, with those previous already traced apart.
+  std::vector<uint32_t> live = previous->impl_->live;
+  bool share_main = true;
+  for (uint32_t id = 0; id < now.size(); ++id) {
+    const bool same = now[id].bvh == before[id].bvh && now[id].indirect == before[id].indirect &&
+                      now[id].to_world.m == before[id].to_world.m;
+    if (same || std::binary_search(previous->impl_->live.begin(), previous->impl_->live.end(), id)) continue;
+    // Previous's main top level places this shape where it was: it cannot serve.
+    share_main = false;
+    live.insert(std::upper_bound(live.begin(), live.end(), id), id);
+    if (live.size() > kMostLiveShapes) return {};
+  }
+  return {std::move(live), share_main};
 }
 
 void EmbreeScene::commit(const EmbreeScene* previous) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::commit twice");
   if (previous && !previous->impl_->committed) previous = nullptr;
   RTCDevice device = shared_embree_device();
+  TopLevels split = split_top_levels(previous);
+  impl_->live = std::move(split.live);
   // Few instances, rebuilt on every move of an object: a fast build matters more
   // than the last few percent of traversal speed, which the bottom levels decide.
-  impl_->scene = new_embree_scene(RTC_BUILD_QUALITY_MEDIUM);
+  if (split.share_main) {
+    impl_->scene = previous->impl_->scene;
+    rtcRetainScene(impl_->scene);
+  } else {
+    impl_->scene = new_embree_scene(RTC_BUILD_QUALITY_MEDIUM);
+  }
+  if (!impl_->live.empty()) impl_->live_scene = new_embree_scene(RTC_BUILD_QUALITY_MEDIUM);
+  // The top level that traces shape `id`, or null when the shared main one holds it already.
+  const auto top_level_of = [&](uint32_t id) -> RTCScene {
+    if (std::binary_search(impl_->live.begin(), impl_->live.end(), id)) return impl_->live_scene;
+    return split.share_main ? nullptr : impl_->scene;
+  };
   impl_->motion.assign(impl_->instances.size(), {});
   impl_->still.assign(impl_->instances.size(), nullptr);
   // previous's Embree instance of shape `id`, when it places what this one does.
@@ -475,7 +526,7 @@ void EmbreeScene::commit(const EmbreeScene* previous) {
                              : impl_->instances[id].indirect ? kPaint | kPaintIndirect
                                                              : kPaint);
     rtcCommitGeometry(geom);
-    rtcAttachGeometryByID(impl_->scene, geom, geom_id);
+    if (RTCScene top = top_level_of(id)) rtcAttachGeometryByID(top, geom, geom_id);
   };
   for (uint32_t id = 0; id < impl_->instances.size(); ++id) {
     const Instance& instance = impl_->instances[id];
@@ -486,7 +537,7 @@ void EmbreeScene::commit(const EmbreeScene* previous) {
       if (RTCGeometry shared = reusable(id)) {
         // Committed already, with this instance's mask.
         rtcRetainGeometry(shared);
-        rtcAttachGeometryByID(impl_->scene, shared, id);
+        if (RTCScene top = top_level_of(id)) rtcAttachGeometryByID(top, shared, id);
         impl_->still[id] = shared;
       } else if (placeable(instance.to_world)) {
         RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
@@ -530,7 +581,8 @@ void EmbreeScene::commit(const EmbreeScene* previous) {
     impl_->camera_paint_bounds.push_back(
         {Point3(b.lower_x, b.lower_y, b.lower_z) - grow, Point3(b.upper_x, b.upper_y, b.upper_z) + grow});
   }
-  rtcCommitScene(impl_->scene);
+  if (!split.share_main) rtcCommitScene(impl_->scene);
+  if (impl_->live_scene) rtcCommitScene(impl_->live_scene);
   impl_->committed = true;
 }
 
@@ -540,7 +592,7 @@ bool EmbreeScene::same_instances(const EmbreeScene& other) const {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
     if (a[i].bvh != b[i].bvh || a[i].world != b[i].world || a[i].to_world.m != b[i].to_world.m ||
-        a[i].indirect != b[i].indirect || a[i].moving != b[i].moving ||
+        a[i].indirect != b[i].indirect || a[i].moving != b[i].moving || a[i].paint != b[i].paint ||
         (a[i].moving && (a[i].to_close.m != b[i].to_close.m || a[i].local != b[i].local)))
       return false;
   return true;
@@ -575,7 +627,7 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind)
   rh.ray.mask = surface_first ? kSolid : kSolid | (kind == RayKind::camera ? kPaint : kPaintIndirect);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->scene, &context.rtc, &rh);
+  intersect_top_levels(*impl_, context, rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   hit->t = rh.ray.tfar;
   hit->geometry = context.instance_of(rh.hit.instID[0]);
@@ -679,7 +731,7 @@ void EmbreeScene::resolve_paint(const Ray& ray, float layer_thickness, const Vec
     }
   } else {
     rh.ray.mask = kind == RayKind::camera ? kPaint : kPaintIndirect;
-    rtcIntersect1(impl_->scene, &context.rtc, &rh);
+    intersect_top_levels(*impl_, context, rh);
   }
   *hit = {top.t, top.instance, top.prim, {top.u, top.v}};
 }
@@ -691,6 +743,7 @@ bool EmbreeScene::occluded(const Ray& ray, float t_max) const {
   RTCRay r = to_rtc(ray, t_max);
   r.mask = kSolid;
   rtcOccluded1(impl_->scene, &context.rtc, &r);
+  if (r.tfar >= 0.f && impl_->live_scene) rtcOccluded1(impl_->live_scene, &context.rtc, &r);
   return r.tfar < 0.f;
 }
 
@@ -717,6 +770,12 @@ SurfaceInteraction EmbreeScene::interaction(const Ray& ray, const Hit& hit) cons
                               : std::get<Sphere>(shape).interaction(ray, hit.t);
   si.object = hit.geometry;
   si.time = ray.time;
+  if (instance.paint && hit.prim < instance.paint->group_of_triangle->size()) {
+    // Weighed as interpolate_shading weighs three vertex colours equal to it.
+    const Color c = instance.paint->colors[(*instance.paint->group_of_triangle)[hit.prim]];
+    const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.f - b1 - b2;
+    si.color = b0 * c + b1 * c + b2 * c;
+  }
   const AlphaMask* mask = instance.bvh->mask();
   if (mask && mask->paint && mask->layer_thickness > 0.f) {
     // Paint is seen in painting order, not by height, so its shading point may
@@ -735,6 +794,11 @@ void EmbreeScene::bounds(Point3* lo, Point3* hi) const {
   rtcGetSceneBounds(impl_->scene, &b);
   *lo = {b.lower_x, b.lower_y, b.lower_z};
   *hi = {b.upper_x, b.upper_y, b.upper_z};
+  if (impl_->live_scene) {
+    rtcGetSceneBounds(impl_->live_scene, &b);
+    *lo = glm::min(*lo, Point3(b.lower_x, b.lower_y, b.lower_z));
+    *hi = glm::max(*hi, Point3(b.upper_x, b.upper_y, b.upper_z));
+  }
   if (!impl_->any_moving) return;
   // Bounds at the shutter's opening and closing, between which Embree's linear
   // bounds hold everything at every instant.

@@ -27,6 +27,16 @@ struct Hit {
 
 using Shape = std::variant<TriangleMesh, Sphere>;
 
+// Colours that stand for a mesh's own vertex colours, one per group of triangles (a
+// painterly stroke): a repaint of 100,000 strokes makes 100,000 colours, not a copy of
+// their mesh (docs/architecture.md, "Edits of large documents"). A hit weighs its
+// group's colour as it weighs the three vertex colours it stands for, so a mesh
+// whose vertices carry these colours shades the same, bit for bit.
+struct MeshPaint {
+  std::shared_ptr<const std::vector<uint32_t>> group_of_triangle;
+  std::vector<Color> colors;  // by group
+};
+
 // What a closest-hit ray gathers: what the camera sees, directly or through
 // mirrors and glass (every shape), or light after a diffuse or glossy bounce
 // (paint hidden from it is skipped: the surface under it stands in).
@@ -89,8 +99,10 @@ class EmbreeScene {
   // shape when to_world is the identity.
   // `indirect` false hides paint (AlphaMask::paint) from RayKind::indirect rays;
   // other shapes are seen by every ray.
+  // `paint`, for a mesh, stands for its vertex colours in what hits read.
   uint32_t add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
-               std::shared_ptr<const Shape> world, bool indirect = true);
+               std::shared_ptr<const Shape> world, bool indirect = true,
+               std::shared_ptr<const MeshPaint> paint = nullptr);
   // A shared bottom level that moves while the shutter is open (docs/architecture.md,
   // "Motion blur"): placed by `open` at time 0 and by `close` at time 1, an Embree
   // instance of two time steps in between (scale and shear and the translation
@@ -101,7 +113,7 @@ class EmbreeScene {
   // shape() read.
   uint32_t add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open, const Transform& close,
                       std::shared_ptr<const Shape> local, std::shared_ptr<const Shape> world,
-                      bool indirect = true);
+                      bool indirect = true, std::shared_ptr<const MeshPaint> paint = nullptr);
   // An uncommitted scene placing what the committed `other` places, for an edit that
   // moves a few of its shapes (replace) before commit(&other).
   static EmbreeScene with_instances_of(const EmbreeScene& other);
@@ -111,8 +123,18 @@ class EmbreeScene {
   // Builds the top level. With `previous` (a committed scene, say the last compile's),
   // an instance that places the same BVH by the same transform as previous's instance of
   // the same index takes previous's Embree instance (Embree attaches a geometry to any
-  // number of scenes): moving one object of thousands makes one new instance.
+  // number of scenes): moving one object of thousands makes one new instance. The
+  // shapes placed anew are traced from a small second top level, and previous's main
+  // one is shared while the same few keep moving (docs/architecture.md, "Edits of
+  // large documents"): a drag rebuilds a top level of one instance, not of thousands.
   void commit(const EmbreeScene* previous = nullptr);
+  // How many shapes the second top level holds at the most; a commit that would
+  // put more there builds one top level of everything.
+  static constexpr size_t kMostLiveShapes = 64;
+  // The shapes traced from the second top level (sorted; empty for most scenes).
+  const std::vector<uint32_t>& live_shapes() const { return impl_->live; }
+  // Whether this scene's main top level is `other`'s, shared rather than built again.
+  bool shares_top_level(const EmbreeScene& other) const { return impl_->scene == other.impl_->scene; }
   // Whether `other` places the same BVHs, by the same transforms, with the same
   // world shapes: then its committed top level can stand for this one.
   bool same_instances(const EmbreeScene& other) const;
@@ -146,6 +168,7 @@ class EmbreeScene {
     bool moving = false;
     Transform to_close{};
     std::shared_ptr<const Shape> local{};
+    std::shared_ptr<const MeshPaint> paint{};  // stands for the mesh's vertex colours
   };
   struct Impl {
     std::vector<Instance> instances;
@@ -170,6 +193,10 @@ class EmbreeScene {
     float camera_layer = 0.f;                                // the thickest layer of camera paint
     std::vector<std::array<Point3, 2>> camera_paint_bounds;  // world bounds of each, grown by its layer
     RTCSceneTy* scene = nullptr;
+    // The shapes recent edits placed anew, out of `scene` and in a top level of their
+    // own (null when there are none), so `scene` can be the previous commit's.
+    std::vector<uint32_t> live;
+    RTCSceneTy* live_scene = nullptr;
     bool committed = false;
     ~Impl();
   };
@@ -183,6 +210,13 @@ class EmbreeScene {
   // A camera ray's hit on a surface: the last-painted camera paint on it, if
   // any, replaces it.
   void paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) const;
+  // Which shapes commit(previous) traces from the second top level, and whether
+  // previous's main top level then serves as this one's.
+  struct TopLevels {
+    std::vector<uint32_t> live;
+    bool share_main = false;
+  };
+  TopLevels split_top_levels(const EmbreeScene* previous) const;
 
   std::shared_ptr<Impl> impl_;
 };
