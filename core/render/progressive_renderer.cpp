@@ -1,8 +1,7 @@
 #include "core/render/progressive_renderer.h"
 
 #include "core/film/aov_display.h"
-#include "core/film/denoise.h"
-#include "core/film/resolve.h"
+#include "core/film/denoise.h"  // denoise_aovs
 #include "core/compiler/compile.h"
 
 #include <algorithm>
@@ -11,16 +10,6 @@
 
 namespace inkray {
 namespace {
-
-// The first preview is this much coarser than the image (per axis): 1/64 of
-// the pixels, so it is ready within a UI frame or two even on one thread;
-// each following stage halves it. A scene whose first preview takes longer than
-// kFirstPreviewBudgetMs starts one step coarser from then on, down to
-// kCoarsestPreviewDivisor, and one whose next step finer would take under half of it
-// one step finer.
-constexpr int kFirstPreviewDivisor = 8;
-constexpr int kCoarsestPreviewDivisor = 32;
-constexpr double kFirstPreviewBudgetMs = 8.0;
 
 AovSet aovs_for(const ViewportView& view) {
   // The selection highlight reads object ids; the denoiser's features are always kept,
@@ -35,6 +24,13 @@ double ms_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
+// The region's film pixels, rounded outwards.
+PixelWindow region_pixels(const RegionRect& region, const Film& film) {
+  const int w = film.width(), h = film.height();
+  return {int(std::floor(region.x0 * w)), int(std::floor(region.y0 * h)), int(std::ceil(region.x1 * w)),
+          int(std::ceil(region.y1 * h))};
+}
+
 }  // namespace
 
 ProgressiveRenderer::ProgressiveRenderer(int threads) : session_(threads) {
@@ -44,7 +40,7 @@ ProgressiveRenderer::ProgressiveRenderer(int threads) : session_(threads) {
 ProgressiveRenderer::~ProgressiveRenderer() {
   {
     std::lock_guard lock(mutex_);
-    stop_ = true;
+    requests_.stop = true;
   }
   superseded_.store(true);
   session_.cancel();
@@ -56,9 +52,9 @@ uint64_t ProgressiveRenderer::submit(const SceneDesc& scene) {
   uint64_t revision;
   {
     std::lock_guard lock(mutex_);
-    pending_ = scene;
-    revision = pending_revision_ = ++revisions_;
-    pending_time_ = std::chrono::steady_clock::now();
+    requests_.document = scene;
+    revision = requests_.revision = ++revisions_;
+    requests_.time = std::chrono::steady_clock::now();
     // Under the lock, so it cannot land after the worker took this very document.
     superseded_.store(true);
   }
@@ -70,8 +66,8 @@ uint64_t ProgressiveRenderer::submit(const SceneDesc& scene) {
 void ProgressiveRenderer::set_view(const ViewportView& view) {
   {
     std::lock_guard lock(mutex_);
-    view_ = view;
-    reencode_ = true;
+    requests_.view = view;
+    requests_.view_changed = true;
   }
   // The pass in flight stops and resumes after the new encoding is published (its
   // finished tiles are kept), so an exposure drag shows at once, not a pass later.
@@ -82,8 +78,8 @@ void ProgressiveRenderer::set_view(const ViewportView& view) {
 void ProgressiveRenderer::set_limits(const ViewportLimits& limits) {
   {
     std::lock_guard lock(mutex_);
-    limits_ = limits;
-    reencode_ = true;  // a raised limit lets a finished render continue
+    requests_.limits = limits;
+    requests_.view_changed = true;  // a raised limit lets a finished render continue
   }
   wake_.notify_all();
 }
@@ -91,8 +87,8 @@ void ProgressiveRenderer::set_limits(const ViewportLimits& limits) {
 void ProgressiveRenderer::set_region(const RegionRect& region) {
   {
     std::lock_guard lock(mutex_);
-    region_ = region;
-    restart_ = true;
+    requests_.region = region;
+    requests_.region_changed = true;
   }
   session_.cancel();
   wake_.notify_all();
@@ -101,14 +97,14 @@ void ProgressiveRenderer::set_region(const RegionRect& region) {
 void ProgressiveRenderer::set_paused(bool paused) {
   {
     std::lock_guard lock(mutex_);
-    paused_ = paused;
+    requests_.paused = paused;
   }
   wake_.notify_all();
 }
 
 bool ProgressiveRenderer::paused() const {
   std::lock_guard lock(mutex_);
-  return paused_;
+  return requests_.paused;
 }
 
 uint64_t ProgressiveRenderer::generation() const {
@@ -143,165 +139,118 @@ std::vector<std::string> ProgressiveRenderer::take_warnings() {
 }
 
 void ProgressiveRenderer::run() {
-  std::shared_ptr<const RenderScene> scene;  // what the session renders
   for (;;) {
-    std::optional<SceneDesc> desc;
-    bool restart = false, reencode = false, paused = false;
-    ViewportView view;
-    ViewportLimits limits;
-    RegionRect region;
-    uint64_t revision = 0;
-    std::chrono::steady_clock::time_point revision_time;
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || pending_ || restart_ || reencode_ || (active_ && !paused_); });
-      if (stop_) return;
-      desc = std::move(pending_);
-      pending_.reset();
-      superseded_.store(false);  // under the lock: a submit() after this sets it again
-      revision = pending_revision_;
-      revision_time = pending_time_;
-      restart = std::exchange(restart_, false);
-      reencode = std::exchange(reencode_, false);
-      view = view_;
-      limits = limits_;
-      region = region_;
-      paused = paused_;
-    }
-    bool keep_film = false;
-    if (desc) {
-      // The compiler redoes only what the edit touched (docs/architecture.md, "Stages"):
-      // a camera move or a material edit costs no rebuild of the geometry.
-      CompileOptions options;
-      options.cancel = Cancel(&superseded_);
-      options.stand_in_for_broken_graphs = true;   // one bad graph must not blank the viewport
-      options.stand_in_for_missing_assets = true;  // nor a file that moved: it is drawn as a placeholder
-      CompileResult compiled = session_.pool().run([&] { return compiler_.compile(*desc, options); });
-      std::lock_guard lock(mutex_);
-      if (compiled.cancelled) continue;  // the newer document is waiting
-      if (!compiled.scene) {
-        messages_.insert(messages_.end(), compiled.errors.begin(), compiled.errors.end());
-        continue;  // the last good scene stays on screen
-      }
-      warnings_.insert(warnings_.end(), compiled.warnings.begin(), compiled.warnings.end());
-      // Line colours, the painterly filter and render limits are read when the film
-      // is resolved: the samples so far stay, and the image is composited again.
-      keep_film =
-          scene && !restart && compiled.changes.within({Stage::layout, Stage::resolve, Stage::limits});
-      scene = scene_ = compiled.scene;
-      revision_ = revision;
-      revision_time_ = revision_time;
-      if (!keep_film) restart = true;
-    }
-    if (!scene) continue;
-    const bool region_only = restart && !desc;  // set_region() alone asked for it
-    if (reencode && (aovs_for(view).bits & ~aovs_.bits) != 0) restart = true;
-    if (restart && region_only && !region.empty() && session_.divisor() == 1 &&
-        aovs_for(view).bits == aovs_.bits) {
-      // A region over the full-resolution film: the pixels around it keep their samples.
-      const int w = session_.film().width(), h = session_.film().height();
-      session_.restart_region(int(std::floor(region.x0 * w)), int(std::floor(region.y0 * h)),
-                              int(std::ceil(region.x1 * w)), int(std::ceil(region.y1 * h)));
-      curve_.clear();
-      ++accumulation_;
-      base_current_ = false;
-      active_ = true;
-    } else if (restart) {
-      aovs_ = aovs_for(view);
-      curve_.clear();
-      first_publish_ = true;
-      const int divisor = region.empty() ? first_divisor_ : 1;
-      session_.set_scene(scene, aovs_, divisor);
-      ++accumulation_;
-      base_current_ = false;
-      const int w = session_.film().width(), h = session_.film().height();
-      if (region.empty()) {
-        session_.set_region(0, 0, 0, 0);
-      } else {
-        session_.set_region(int(std::floor(region.x0 * w)), int(std::floor(region.y0 * h)),
-                            int(std::ceil(region.x1 * w)), int(std::ceil(region.y1 * h)));
-      }
-      active_ = true;
-    } else if (keep_film) {
-      session_.update_scene(scene);
-      // A line edit composites the cached base again; a filter edit filters anew.
-      if (!same_base(base_settings_, scene->settings)) base_current_ = false;
-      resolved_current_ = false;
-      active_ = true;
-      if (session_.stats().passes > 0) publish_snapshot(scene, view, limits, false);
-    } else if (reencode) {
-      active_ = true;  // limits may have been raised; limits_reached() decides below
-      if (session_.stats().passes > 0) publish_snapshot(scene, view, limits, false);
-    }
-    if (!active_ || paused) continue;
-    const int divisor = session_.divisor();
-    if (divisor == 1 && session_.stats().passes > 0 && limits_reached(limits)) {
-      active_ = false;
-      publish_snapshot(scene, view, limits, true);
-      continue;
-    }
-    base_current_ = false;  // the pass adds samples, finished or not
-    // Only the full-resolution film samples adaptively; each preview is one pass.
-    session_.set_adaptive({divisor == 1 ? limits.noise_target : 0.0, 16});
-    const auto pass_start = std::chrono::steady_clock::now();
-    if (!session_.render_pass()) continue;  // cancelled: a newer request is waiting
-    if (first_publish_ && divisor > 1) adapt_first_preview(divisor, ms_since(pass_start));
-    const RenderStats& stats = session_.stats();
-    if (divisor == 1) curve_.push_back({stats.elapsed_seconds, stats.relative_error});
-    const bool done = divisor == 1 && limits_reached(limits);
-    publish_snapshot(scene, view, limits, done);
-    if (divisor > 1) {
-      session_.set_scene(scene, aovs_, divisor / 2);
-      ++accumulation_;
-      base_current_ = false;
-    } else if (done) {
-      active_ = false;
-    }
+    const ViewportWork work = schedule_.next(film_state());
+    if (work.kind == ViewportWork::Kind::stop) return;
+    execute(work);
   }
 }
 
-void ProgressiveRenderer::adapt_first_preview(int divisor, double ms) {
-  if (ms > kFirstPreviewBudgetMs && divisor < kCoarsestPreviewDivisor) {
-    first_divisor_ = divisor * 2;
-  } else if (4.0 * ms < 0.5 * kFirstPreviewBudgetMs && divisor > kFirstPreviewDivisor) {
-    // One step finer has four times the pixels: taken only while that stays well within
-    // the budget, so the divisor does not swing between two steps.
-    first_divisor_ = divisor / 2;
+void ProgressiveRenderer::execute(const ViewportWork& work) {
+  switch (work.kind) {
+    case ViewportWork::Kind::wait:
+      return schedule_.taken(take(work.wake_to_render));
+    case ViewportWork::Kind::stop:
+      return;
+    case ViewportWork::Kind::compile:
+      return schedule_.compiled(compile());
+    case ViewportWork::Kind::restart:
+    case ViewportWork::Kind::restart_region:
+    case ViewportWork::Kind::refine:
+      return restart(work);
+    case ViewportWork::Kind::keep_film:
+      session_.update_scene(scene_);
+      return resolver_.invalidate(ResolveChange::resolve_settings);
+    case ViewportWork::Kind::pass:
+      return schedule_.passed(render_pass(work));
+    case ViewportWork::Kind::publish:
+      return schedule_.published(publish_snapshot(work.finished));
   }
 }
 
-bool ProgressiveRenderer::limits_reached(const ViewportLimits& limits) const {
-  const RenderStats& s = session_.stats();
-  if (limits.spp > 0 && int(s.spp) >= limits.spp) return true;
-  if (limits.time_seconds > 0.0 && s.elapsed_seconds >= limits.time_seconds) return true;
-  return noise_target_reached(s, limits.noise_target) || session_.converged();
+ViewportRequests ProgressiveRenderer::take(bool wake_to_render) {
+  std::unique_lock lock(mutex_);
+  Requests& r = requests_;
+  wake_.wait(lock, [&] {
+    return r.stop || r.document || r.region_changed || r.view_changed || (wake_to_render && !r.paused);
+  });
+  if (r.stop) return {.stop = true};
+  superseded_.store(false);  // under the lock: a submit() after this sets it again
+  std::optional<SceneDesc> document = std::exchange(r.document, std::nullopt);
+  taken_ = r;
+  taken_.document = std::move(document);
+  r.region_changed = r.view_changed = false;
+  const AovSet need = aovs_for(taken_.view);
+  return {.document = bool(taken_.document),
+          .region_changed = taken_.region_changed,
+          .view_changed = taken_.view_changed,
+          .paused = taken_.paused,
+          .region_empty = taken_.region.empty(),
+          .aovs = (need.bits & ~aovs_.bits) != 0 ? FilmAovs::missing
+                  : need.bits == aovs_.bits      ? FilmAovs::same
+                                                 : FilmAovs::fewer,
+          .limits = taken_.limits};
 }
 
-RgbImage ProgressiveRenderer::final_radiance(const ViewportView& view, bool finished, const Cancel& cancel) {
+CompileOutcome ProgressiveRenderer::compile() {
+  // The compiler redoes only what the edit touched (docs/architecture.md, "Stages"):
+  // a camera move or a material edit costs no rebuild of the geometry.
+  CompileOptions options;
+  options.cancel = Cancel(&superseded_);
+  options.stand_in_for_broken_graphs = true;   // one bad graph must not blank the viewport
+  options.stand_in_for_missing_assets = true;  // nor a file that moved: it is drawn as a placeholder
+  CompileResult compiled = session_.pool().run([&] { return compiler_.compile(*taken_.document, options); });
+  taken_.document.reset();
+  std::lock_guard lock(mutex_);
+  if (compiled.cancelled) return CompileOutcome::cancelled;  // the newer document is waiting
+  if (!compiled.scene) {
+    messages_.insert(messages_.end(), compiled.errors.begin(), compiled.errors.end());
+    return CompileOutcome::failed;  // the last good scene stays on screen
+  }
+  warnings_.insert(warnings_.end(), compiled.warnings.begin(), compiled.warnings.end());
+  scene_ = compiled.scene;
+  revision_ = taken_.revision;
+  revision_time_ = taken_.time;
+  return compiled.changes.within({Stage::layout, Stage::resolve, Stage::limits})
+             ? CompileOutcome::resolve_only
+             : CompileOutcome::new_scene;
+}
+
+void ProgressiveRenderer::restart(const ViewportWork& work) {
+  resolver_.invalidate(ResolveChange::new_samples);
+  if (work.kind == ViewportWork::Kind::refine) {
+    session_.set_scene(scene_, aovs_, work.divisor);
+    return;
+  }
+  curve_.clear();
+  if (work.kind == ViewportWork::Kind::restart_region) {
+    const PixelWindow w = region_pixels(taken_.region, session_.film());
+    session_.restart_region(w.x0, w.y0, w.x1, w.y1);
+    return;
+  }
+  aovs_ = aovs_for(taken_.view);
+  session_.set_scene(scene_, aovs_, work.divisor);
+  session_.set_region(taken_.region.empty() ? PixelWindow{} : region_pixels(taken_.region, session_.film()));
+}
+
+std::optional<double> ProgressiveRenderer::render_pass(const ViewportWork& work) {
+  resolver_.invalidate(ResolveChange::new_samples);  // the pass adds samples, finished or not
+  session_.set_adaptive({work.noise_target, 16});
+  const auto start = std::chrono::steady_clock::now();
+  if (!session_.render_pass()) return std::nullopt;  // cancelled: a newer request is waiting
+  const double ms = ms_since(start);
+  const RenderStats& stats = session_.stats();
+  if (work.divisor == 1) curve_.push_back({stats.elapsed_seconds, stats.relative_error});
+  return ms;
+}
+
+ViewportFilm ProgressiveRenderer::film_state() const {
+  return {session_.divisor(), session_.stats(), session_.converged()};
+}
+
+bool ProgressiveRenderer::publish_snapshot(bool finished) {
   const Film& film = session_.film();
-  if (!view.denoise || film.width() == 0) return film.resolve();
-  // Denoising again costs a few passes' time at most: once its cost is small beside
-  // the time since, at a new accumulation, and when the render finishes.
-  const auto now = std::chrono::steady_clock::now();
-  const double since = std::chrono::duration<double>(now - denoised_at_).count();
-  const bool due = denoised_accumulation_ != accumulation_ || finished ||
-                   (session_.stats().spp != denoised_spp_ && since >= std::max(0.5, 4.0 * denoise_seconds_));
-  if (due) {
-    Denoised d = denoise(film, &session_.pool(), cancel);
-    if (d.image.pixels.empty()) return {};
-    denoised_ = std::move(d.image);
-    denoised_error_ = d.relative_error;
-    denoised_accumulation_ = accumulation_;
-    denoised_spp_ = session_.stats().spp;
-    denoise_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count();
-    denoised_at_ = std::chrono::steady_clock::now();
-  }
-  return denoised_;
-}
-
-void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderScene>& scene,
-                                           const ViewportView& view, const ViewportLimits&, bool finished) {
-  const Film& film = session_.film();
+  const ViewportView& view = taken_.view;
   auto snap = std::make_shared<ViewportSnapshot>();
   if (view.display >= 0 && film.aovs().has(Aov(view.display))) {
     const Aov aov = Aov(view.display);
@@ -312,28 +261,11 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
     snap->rgba =
         encode_display(film.resolve_noise(), DisplayEncoding{view.encoding.exposure, ViewTransform::raw});
   } else {
-    if (base_denoised_ != view.denoise) base_current_ = false;
-    if (!base_current_) {
-      const Cancel cancel(&superseded_);
-      RgbImage radiance = final_radiance(view, finished, cancel);
-      if (radiance.pixels.empty()) return;  // cut short: the newer document is waiting
-      base_ = resolve_base(std::move(radiance), scene->settings, film.height(), &session_.pool(), cancel);
-      if (base_.pixels.empty()) return;
-      base_denoised_ = view.denoise;
-      lines_ = gather_lines(film);
-      base_settings_ = scene->settings;
-      base_current_ = true;
-      resolved_current_ = false;
-    }
-    if (!film.has_lines()) {
-      resolved_ = {};
-    } else if (!resolved_current_ || !(resolved_for_ == view.encoding)) {
-      resolved_ = base_;  // reuses its pixels' storage
-      composite_lines(lines_, scene->outlines, view.encoding, resolved_);
-      resolved_for_ = view.encoding;
-      resolved_current_ = true;
-    }
-    snap->rgba = encode_display(film.has_lines() ? resolved_ : base_, view.encoding);
+    const FilmProgress progress{schedule_.accumulation(), session_.stats().spp, finished};
+    const RgbImage* image = resolver_.resolve(film, session_.scene(), view.encoding, view.denoise, progress,
+                                              session_.pool(), Cancel(&superseded_));
+    if (!image) return false;  // cut short: the newer document is waiting
+    snap->rgba = encode_display(*image, view.encoding);
   }
   if (view.highlight_object >= 0 && film.aovs().has(Aov::object_id)) {
     // Previews are magnified, so their 1-pixel line is already thick on screen.
@@ -346,21 +278,21 @@ void ProgressiveRenderer::publish_snapshot(const std::shared_ptr<const RenderSce
   snap->stats = session_.stats();
   snap->error_curve = curve_;
   snap->finished = finished;
-  snap->accumulation = accumulation_;
+  snap->accumulation = schedule_.accumulation();
   snap->denoised = view.denoise && view.display == kDisplayFinal;
   if (snap->denoised) {
-    snap->denoised_spp = denoised_spp_;
-    snap->denoised_error = denoised_error_;
+    snap->denoised_spp = resolver_.denoised_spp();
+    snap->denoised_error = resolver_.denoised_error();
   }
   {
     std::lock_guard lock(mutex_);
     snap->revision = revision_;
     snap->submit_to_publish_ms = ms_since(revision_time_);
-    first_publish_ = false;
     latest_ = std::move(snap);
     ++generation_;
   }
   published_.notify_all();
+  return true;
 }
 
 }  // namespace inkray

@@ -1,8 +1,10 @@
 // ProgressiveRenderer: the editor's background renderer. A worker thread owns
 // a RenderSession; submit() hands it a new document, which it compiles,
-// previews at 1/4 and 1/2 resolution, then refines at full resolution until a
+// previews at coarse resolutions, then refines at full resolution until a
 // sample, time or noise limit. After every pass it publishes an immutable
-// snapshot; the UI polls generation() and never waits for a pass.
+// snapshot; the UI polls generation() and never waits for a pass. What the
+// worker does next is decided by a ViewportSchedule, and the film's image is kept
+// by a ViewportResolver (docs/architecture.md, "The viewport loop").
 #pragma once
 
 #include "core/film/film.h"
@@ -10,6 +12,8 @@
 #include "core/render/display_encode.h"
 #include "core/compiler/compile.h"
 #include "core/render/render_session.h"
+#include "core/render/viewport_resolver.h"
+#include "core/render/viewport_schedule.h"
 #include "core/document/desc.h"
 
 #include <atomic>
@@ -38,14 +42,6 @@ struct ViewportView {
   // the denoiser's features, so turning it on denoises the samples already taken.
   bool denoise = false;
   bool operator==(const ViewportView&) const = default;
-};
-
-struct ViewportLimits {
-  int spp = 64;
-  double time_seconds = 0.0;  // 0: none
-  // Stop when the estimated relative error is below; 0: none. Tiles below it stop
-  // taking samples before that (adaptive sampling, core/render/adaptive_sampling.h).
-  double noise_target = 0.0;
 };
 
 // A render region in fractions of the image, [x0,x1) x [y0,y1); empty is the whole image.
@@ -112,15 +108,27 @@ class ProgressiveRenderer {
   int threads() const { return session_.threads(); }
 
  private:
+  // The UI's requests, written under mutex_ and taken by the worker when it waits.
+  struct Requests {
+    std::optional<SceneDesc> document;
+    uint64_t revision = 0;                       // the document's
+    std::chrono::steady_clock::time_point time;  // when it was submitted
+    ViewportView view;
+    ViewportLimits limits;
+    RegionRect region;
+    bool paused = false, stop = false, region_changed = false, view_changed = false;
+  };
+
+  // The worker: asks the schedule for the next piece of work and does it.
   void run();
-  void publish_snapshot(const std::shared_ptr<const RenderScene>& scene, const ViewportView& view,
-                        const ViewportLimits& limits, bool finished);
-  bool limits_reached(const ViewportLimits& limits) const;
-  // After a document's first preview, which took `ms` at `divisor`: the divisor the
-  // next document's first preview starts at (kFirstPreviewBudgetMs).
-  void adapt_first_preview(int divisor, double ms);
-  // The film's mean radiance as the final image starts from: denoised when the view asks.
-  RgbImage final_radiance(const ViewportView& view, bool finished, const Cancel& cancel);
+  void execute(const ViewportWork& work);
+  ViewportRequests take(bool wake_to_render);
+  CompileOutcome compile();
+  void restart(const ViewportWork& work);
+  std::optional<double> render_pass(const ViewportWork& work);  // its time in ms; none when cancelled
+  // False when cut short: a newer document is waiting.
+  bool publish_snapshot(bool finished);
+  ViewportFilm film_state() const;
 
   RenderSession session_;
   // Set when a newer document arrives (or the renderer stops): the compile and the
@@ -132,49 +140,22 @@ class ProgressiveRenderer {
   mutable std::condition_variable published_;
   std::thread worker_;
 
-  // Written by the UI under mutex_, read by the worker at its next step.
-  std::optional<SceneDesc> pending_;
-  uint64_t pending_revision_ = 0;
-  std::chrono::steady_clock::time_point pending_time_;
-  ViewportView view_;
-  ViewportLimits limits_;
-  RegionRect region_;
-  bool paused_ = false, stop_ = false, reencode_ = false, restart_ = false;
+  // Shared with the UI under mutex_.
+  Requests requests_;
   uint64_t revisions_ = 0;
   std::vector<std::string> messages_, warnings_;
   std::shared_ptr<const ViewportSnapshot> latest_;
-  std::shared_ptr<const RenderScene> scene_;
+  std::shared_ptr<const RenderScene> scene_;  // written by the worker only
   uint64_t generation_ = 0;
 
   // Worker-only state.
+  Requests taken_;          // the requests as the worker last took them
   SceneCompiler compiler_;  // keeps what it built between the documents of its edits
-  uint64_t revision_ = 0;
+  ViewportSchedule schedule_;
+  ViewportResolver resolver_;
+  uint64_t revision_ = 0;  // of the scene rendered, and when it was submitted
   std::chrono::steady_clock::time_point revision_time_;
-  bool first_publish_ = true, active_ = false;
-  int first_divisor_ = 8;  // the first preview's: kFirstPreviewDivisor, then adapt_first_preview's
-  uint64_t accumulation_ = 0;
-  // The film's image without lines (mean and painterly filter) and its lines,
-  // while no sample changed since, and the settings it was filtered with: an edit
-  // of lines only keeps it. `resolved_` is it with the lines composited for
-  // `resolved_for_` (empty without lines): lines are composited in display space,
-  // so a new exposure or view transform composites them again over the same base
-  // (core/film/resolve.h), without filtering again.
-  RgbImage base_;
-  bool base_denoised_ = false;
-  // The last denoised radiance, of accumulation `denoised_accumulation_` at
-  // `denoised_spp_`, and what denoising it cost.
-  RgbImage denoised_;
-  uint64_t denoised_accumulation_ = ~uint64_t(0);
-  uint32_t denoised_spp_ = 0;
-  double denoised_error_ = 0.0, denoise_seconds_ = 0.0;
-  std::chrono::steady_clock::time_point denoised_at_;
-  FilmLines lines_;
-  RenderSettings base_settings_;
-  bool base_current_ = false;
-  RgbImage resolved_;
-  DisplayEncoding resolved_for_;
-  bool resolved_current_ = false;
-  AovSet aovs_;
+  AovSet aovs_;  // the film's
   std::vector<ErrorSample> curve_;
 };
 
