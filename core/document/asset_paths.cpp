@@ -83,14 +83,13 @@ void walk_asset_paths(Scene& scene, const Visit& f) {
     }
   };
   const auto every = [](const auto&) { return true; };
+  // Materials and lights: the paths are their variant's, under the item's own path.
+  const auto data = [&](const std::string& at, auto& item, const AssetSite& owner) {
+    Finder{{}, owner, f}.visit_tagged(at, item.data);
+  };
   const AssetSite environment{{}, "the environment"};
   Finder{{}, environment, f}.visit_tagged("environment", scene.environment);
-  section(
-      scene.materials, "materials", "material",
-      [&](const std::string& at, auto& m, const AssetSite& owner) {
-        Finder{{}, owner, f}.visit_tagged(at, m.data);
-      },
-      every);
+  section(scene.materials, "materials", "material", data, every);
   section(
       scene.objects, "objects", "object",
       [&](const std::string& at, auto& o, const AssetSite& owner) {
@@ -99,12 +98,7 @@ void walk_asset_paths(Scene& scene, const Visit& f) {
         finder.visit_tagged(at + ".shape", o.shape);
       },
       [](const auto& o) { return may_name_files(o) || may_name_files(o.shape); });
-  section(
-      scene.lights, "lights", "light",
-      [&](const std::string& at, auto& l, const AssetSite& owner) {
-        Finder{{}, owner, f}.visit_tagged(at, l.data);
-      },
-      every);
+  section(scene.lights, "lights", "light", data, every);
   section(
       scene.strokes, "strokes", "stroke emitter",
       [&](const std::string& at, auto& s, const AssetSite& owner) {

@@ -70,7 +70,7 @@ struct GraphDesc {
   static constexpr std::string_view type_name = "graph";
   std::vector<GraphNodeDesc> nodes;
   std::vector<GraphLinkDesc> links;
-  GraphEditorDesc editor;
+  GraphEditorDesc editor{};  // {}: designated initialisers may omit it
   bool operator==(const GraphDesc&) const = default;
 };
 inline constexpr Param kGraphNodes{"nodes", "The nodes: {\"id\": ..., \"type\": ..., inputs and settings}",

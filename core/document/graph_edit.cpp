@@ -121,6 +121,14 @@ std::optional<GraphDesc> read_fragment(const std::string& text, std::string* err
   return std::get<GraphDesc>(loaded.scene->materials.at(0).data);
 }
 
+// "a, b, c" for the sockets' names, "none" for no socket.
+template <class Sockets>
+std::string socket_names(const Sockets& sockets) {
+  std::string names;
+  for (const auto& s : sockets) names += (names.empty() ? "" : ", ") + std::string(s.name);
+  return names.empty() ? "none" : names;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------- node types
@@ -276,21 +284,13 @@ std::optional<std::string> check_link(const GraphDesc& graph, std::string_view f
   if (!t) return "no node " + in_quotes_(to);
   if (from == to) return "cannot link " + in_quotes_(from) + " to itself";
   const std::optional<SocketType> out = output_type(f->data, output);
-  if (!out) {
-    std::string names;
-    for (const SocketDecl& s : node_outputs(f->data))
-      names += (names.empty() ? "" : ", ") + std::string(s.name);
+  if (!out)
     return describe_node(*f) + " has no output " + in_quotes_(output) +
-           " (outputs: " + (names.empty() ? "none" : names) + ")";
-  }
+           " (outputs: " + socket_names(node_outputs(f->data)) + ")";
   const std::optional<SocketType> in = input_type(t->data, input);
-  if (!in) {
-    std::string names;
-    for (const SocketInfo& s : node_inputs(t->data))
-      names += (names.empty() ? "" : ", ") + std::string(s.name);
+  if (!in)
     return describe_node(*t) + " has no input " + in_quotes_(input) +
-           " (inputs: " + (names.empty() ? "none" : names) + ")";
-  }
+           " (inputs: " + socket_names(node_inputs(t->data)) + ")";
   if (!socket_converts(*out, *in))
     return "cannot link " + type_word(*out) + " output " + in_quotes_(output) + " of " + in_quotes_(from) +
            " to " + type_word(*in) + " input " + in_quotes_(input) + " of " + in_quotes_(to);

@@ -7,6 +7,7 @@
 
 #include "core/document/graph_sockets.h"
 #include "core/document/material_desc.h"
+#include "core/materials/shader_ops.h"
 
 #include <array>
 #include <string>
@@ -15,6 +16,11 @@
 #include <vector>
 
 namespace inkray {
+
+// The parameter table of a node whose inputs are all links.
+struct NoParams {
+  static constexpr std::tuple<> rows{};
+};
 
 // ---------------------------------------------------------------- output
 struct OutputNode {
@@ -33,9 +39,7 @@ struct OutputNode {
   bool operator==(const OutputNode&) const = default;
 };
 template <>
-struct ParamTable<OutputNode> {
-  static constexpr std::tuple<> rows{};
-};
+struct ParamTable<OutputNode> : NoParams {};
 
 // ---------------------------------------------------------------- constants
 struct ValueNode {
@@ -193,19 +197,8 @@ struct ParamTable<ColorRampNode> {
       row(&ColorRampNode::stops, list("stops", "Stops: {\"position\": p, \"color\": c}, in any order"))};
 };
 
-enum class MathOp {
-  add,
-  subtract,
-  multiply,
-  divide,
-  power,
-  minimum,
-  maximum,
-  clamp,
-  smoothstep,
-  greater_than,
-  less_than
-};
+// The compiled program runs the same operations: a node's choice is its instruction's mode.
+using MathOp = ShaderMath;
 inline constexpr std::array<std::string_view, 11> kMathOpNames = {
     "add",     "subtract", "multiply",   "divide",       "power",    "minimum",
     "maximum", "clamp",    "smoothstep", "greater_than", "less_than"};
@@ -278,7 +271,7 @@ struct ParamTable<MixColorNode> {
                  row(&MixColorNode::b, color("b", 1e6, "Top colour"))};
 };
 
-enum class VectorOp { add, subtract, multiply, dot, cross, normalize, length, scale };
+using VectorOp = ShaderVector;
 inline constexpr std::array<std::string_view, 8> kVectorOpNames = {"add",   "subtract",  "multiply", "dot",
                                                                    "cross", "normalize", "length",   "scale"};
 
@@ -395,9 +388,7 @@ struct GeometryNode {
   bool operator==(const GeometryNode&) const = default;
 };
 template <>
-struct ParamTable<GeometryNode> {
-  static constexpr std::tuple<> rows{};
-};
+struct ParamTable<GeometryNode> : NoParams {};
 
 // Toon work: the light a cel shader quantises, traced only when a graph uses it.
 struct LightInputNode {
@@ -412,9 +403,7 @@ struct LightInputNode {
   bool operator==(const LightInputNode&) const = default;
 };
 template <>
-struct ParamTable<LightInputNode> {
-  static constexpr std::tuple<> rows{};
-};
+struct ParamTable<LightInputNode> : NoParams {};
 
 struct FresnelNode {
   static constexpr std::string_view type_name = "fresnel";
@@ -471,9 +460,7 @@ struct AddClosureNode {
   bool operator==(const AddClosureNode&) const = default;
 };
 template <>
-struct ParamTable<AddClosureNode> {
-  static constexpr std::tuple<> rows{};
-};
+struct ParamTable<AddClosureNode> : NoParams {};
 
 using NodeVariant =
     std::variant<OutputNode, ValueNode, RgbNode, ImageTextureNode, CheckerNode, NoiseNode, VoronoiNode,

@@ -130,12 +130,12 @@ struct StrokeEmitterDesc {
   float saturation_jitter = 0.1f;
   float value_jitter = 0.1f;
   BrushKind brush = BrushKind::bristle;
-  std::string brush_image;  // PNG with alpha, for BrushKind::image
-  float bristles = 12.f;    // procedural bristle count across the stroke
-  float pressure = 0.7f;    // alpha falloff along the stroke
-  int segments = 8;         // ribbon segments along each stroke
-  float offset = 0.f;       // lift above the surface, world units; 0 picks one from the object's size
-  bool indirect = false;    // light bouncing off diffuse and glossy surfaces sees the strokes
+  std::string brush_image{};  // PNG with alpha, for BrushKind::image; {}: initialisers may omit it
+  float bristles = 12.f;      // procedural bristle count across the stroke
+  float pressure = 0.7f;      // alpha falloff along the stroke
+  int segments = 8;           // ribbon segments along each stroke
+  float offset = 0.f;         // lift above the surface, world units; 0 picks one from the object's size
+  bool indirect = false;      // light bouncing off diffuse and glossy surfaces sees the strokes
   bool operator==(const StrokeEmitterDesc&) const = default;
 };
 template <>

@@ -31,17 +31,18 @@ struct PartialInfo {
   uint32_t first_pass = 0, end_pass = 0;
   // A checkpoint cut mid-pass also holds pass end_pass on these tiles of the full
   // image (RenderSession::tiles_done); empty otherwise. Only a render resumes it.
-  std::vector<uint8_t> tiles_done;
+  std::vector<uint8_t> tiles_done{};
   float frame = 1.f;
   int seed = 0;
-  std::string scene;       // the document rendered, as inkray writes it (scene_to_string)
-  AovSet aovs;             // first-hit AOVs held (outline AOVs come from the line sums)
+  std::string scene{};     // the document rendered, as inkray writes it (scene_to_string)
+  AovSet aovs{};           // first-hit AOVs held (outline AOVs come from the line sums)
   bool lines = false;      // the line sums are held (the scene draws lines)
   uint64_t nonfinite = 0;  // samples dropped as not finite
   // The files the scene refers to and their bytes' hashes (scene_hash.h); the header's
   // content hash is derived from these and the scene. Last: aggregate initialisers
-  // of the fields above keep working.
-  std::vector<AssetHash> assets;
+  // of the fields above keep working. (Every field has a default, `{}` at least, so a
+  // designated initialiser may leave any out without -Wmissing-field-initializers.)
+  std::vector<AssetHash> assets{};
 };
 
 // The file's bytes for the pixels of info.window of `film`, which covers the

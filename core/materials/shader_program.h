@@ -7,6 +7,7 @@
 
 #include "core/image/rgb_image.h"
 #include "core/materials/procedural.h"
+#include "core/materials/shader_ops.h"
 
 #include <array>
 #include <cstdint>
@@ -31,7 +32,7 @@ enum class ShaderOp : uint8_t {
   luminance,
   mean,
   clamp01,
-  // math (mode: MathOp), map_range (mode 1: clamped)
+  // math (mode: ShaderMath), map_range (mode 1: clamped)
   math,
   map_range,
   // colour
@@ -44,7 +45,7 @@ enum class ShaderOp : uint8_t {
   separate_y,
   separate_z,
   combine,
-  // vectors (mode: VectorOp); vector_value is the float result of dot and length
+  // vectors (mode: ShaderVector); vector_value is the float result of dot and length
   vector_math,
   vector_value,
   // the hit
@@ -76,22 +77,6 @@ enum class ShaderOp : uint8_t {
   voronoi_color,
   voronoi_position,
 };
-
-// Operations of the math and vector math nodes, in the order of their JSON names.
-enum class ShaderMath : uint8_t {
-  add,
-  subtract,
-  multiply,
-  divide,
-  power,
-  minimum,
-  maximum,
-  clamp,
-  smoothstep,
-  greater_than,
-  less_than
-};
-enum class ShaderVector : uint8_t { add, subtract, multiply, dot, cross, normalize, length, scale };
 
 inline constexpr int kMaxShaderInputs = 5;
 inline constexpr int kMaxShaderRegisters = 256;  // 3 KB of stack per evaluation

@@ -419,10 +419,11 @@ int clamp_sectors(int sectors) { return std::clamp(sectors, 1, kMaxSectors); }
 float clamp_radius(float radius) { return std::isfinite(radius) ? std::clamp(radius, 0.5f, 256.f) : 4.f; }
 float clamp_sharpness(float q) { return std::isfinite(q) ? std::max(q, 0.f) : 8.f; }
 
-}  // namespace
-
-RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params, ThreadBudget* pool,
-                         const Cancel& cancel) {
+// Both filters: clamp the settings, prepare the source and run `rows` (kuwahara_rows
+// or anisotropic_rows, for the padded sector count); an empty image when cancelled.
+template <class Rows>
+RgbImage filter_rows(const RgbImage& image, const PainterlyFilterParams& params, ThreadBudget* pool,
+                     const Cancel& cancel, Rows rows) {
   RgbImage out{image.width, image.height, std::vector<Color>(image.pixels.size())};
   if (image.width <= 0 || image.height <= 0) return out;
   const int sectors = clamp_sectors(params.sectors);
@@ -430,25 +431,24 @@ RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& par
   const Source source = prepare_source(image, pool);
   bool finished = false;
   with_sector_count(padded_sectors(sectors), [&](auto n) {
-    finished = kuwahara_rows<n()>(source, table, clamp_radius(params.radius),
-                                  clamp_sharpness(params.sharpness), pool, cancel, out);
+    finished = rows(n, source, table, clamp_radius(params.radius), clamp_sharpness(params.sharpness), pool,
+                    cancel, out);
   });
   return finished ? out : RgbImage{};
 }
 
+}  // namespace
+
+RgbImage kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params, ThreadBudget* pool,
+                         const Cancel& cancel) {
+  return filter_rows(image, params, pool, cancel,
+                     [](auto n, auto&&... args) { return kuwahara_rows<n()>(args...); });
+}
+
 RgbImage anisotropic_kuwahara_filter(const RgbImage& image, const PainterlyFilterParams& params,
                                      ThreadBudget* pool, const Cancel& cancel) {
-  RgbImage out{image.width, image.height, std::vector<Color>(image.pixels.size())};
-  if (image.width <= 0 || image.height <= 0) return out;
-  const int sectors = clamp_sectors(params.sectors);
-  const SectorTable table(sectors);
-  const Source source = prepare_source(image, pool);
-  bool finished = false;
-  with_sector_count(padded_sectors(sectors), [&](auto n) {
-    finished = anisotropic_rows<n()>(source, table, clamp_radius(params.radius),
-                                     clamp_sharpness(params.sharpness), pool, cancel, out);
-  });
-  return finished ? out : RgbImage{};
+  return filter_rows(image, params, pool, cancel,
+                     [](auto n, auto&&... args) { return anisotropic_rows<n()>(args...); });
 }
 
 }  // namespace inkray

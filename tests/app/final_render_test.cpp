@@ -42,14 +42,6 @@ size_t lines_of(const std::string& text) { return size_t(std::count(text.begin()
 
 class FinalRender : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("inkray_final_render_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   // The Cornell box with outlines, small: lines make the adaptive line sampler decide.
   RunResult render(const std::string& args) const {
@@ -59,7 +51,8 @@ class FinalRender : public ::testing::Test {
                                     args);
   }
   RunResult merge(const std::string& args) const { return run("inkray-merge", args); }
-  fs::path dir_;
+  testing::ScratchFolder scratch_;  // removed with the fixture
+  const std::filesystem::path dir_ = scratch_.path();
 };
 
 TEST_F(FinalRender, SlicesMergeToTheImageOfOneRun) {

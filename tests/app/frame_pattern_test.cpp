@@ -14,7 +14,7 @@ namespace inkray {
 namespace {
 
 namespace fs = std::filesystem;
-using Names = std::vector<std::string>;
+using testing::Names;
 using testing::ScratchFolder;
 
 struct RunResult {

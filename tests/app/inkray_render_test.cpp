@@ -35,18 +35,11 @@ RunResult run_render(const std::string& args) {
 
 class InkrayRender : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("inkray_render_test_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
   std::string scene(const std::string& name) const {
     return std::string(INKRAY_SOURCE_DIR) + "/scenes/" + name;
   }
-  std::filesystem::path dir_;
+  testing::ScratchFolder scratch_;  // removed with the fixture
+  const std::filesystem::path dir_ = scratch_.path();
 };
 
 // --write-scene saves the scene as the editor does and renders nothing; the result opens

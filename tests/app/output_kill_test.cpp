@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-using Names = std::vector<std::string>;
+using testing::Names;
 using testing::read_file;
 using testing::ScratchFolder;
 

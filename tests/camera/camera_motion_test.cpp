@@ -9,11 +9,7 @@ namespace inkray {
 namespace {
 
 CameraDesc at(Point3 from, Point3 target, float vfov) {
-  CameraDesc d;
-  d.look_from = from;
-  d.look_at = target;
-  d.vfov = vfov;
-  return d;
+  return {.look_from = from, .look_at = target, .vfov = vfov};
 }
 
 void expect_same_ray(const Ray& a, const Ray& b, float tolerance) {

@@ -41,13 +41,8 @@ SceneDesc scene_with_files(const fs::path& folder) {
   ball.material = "toon";
   ball.transform.translate = Vec3(2.5f, 0.f, 0.f);
   d.objects.push_back(ball);
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "ball";
-  e.count = 60;
-  e.brush = BrushKind::image;
-  e.brush_image = "dab.png";
-  d.strokes.push_back(e);
+  d.strokes.push_back(StrokeEmitterDesc{
+      .name = "paint", .object = "ball", .count = 60, .brush = BrushKind::image, .brush_image = "dab.png"});
   d.lights.push_back({"sun", DirectionalLightDesc{}});
   return d;
 }

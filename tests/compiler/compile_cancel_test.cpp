@@ -18,12 +18,8 @@ namespace {
 // 1.5 million strokes (27 million vertices, within the budget): seconds of building.
 SceneDesc heavy_stroke_scene() {
   SceneDesc s = testing::one_sphere_scene(8, 8);
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "ball";
-  e.count = 1500000;
-  e.seed = 4242;  // a placement no other test has cached
-  s.strokes = {e};
+  // The seed: a placement no other test has cached.
+  s.strokes = {StrokeEmitterDesc{.name = "paint", .object = "ball", .seed = 4242, .count = 1500000}};
   return s;
 }
 

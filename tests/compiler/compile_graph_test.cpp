@@ -4,6 +4,7 @@
 
 #include "core/document/json_io.h"
 #include <nlohmann/json.hpp>
+#include "support/messages.h"
 #include "support/render_helpers.h"
 
 #include <gtest/gtest.h>
@@ -16,20 +17,13 @@ using namespace inkray::testing;
 std::string errors_of(const GraphDesc& g) {
   const CompiledGraph c = compile(g);
   EXPECT_FALSE(c.program) << "expected the graph to be refused";
-  std::string all;
-  for (const std::string& e : c.errors) all += e + "\n";
-  return all;
+  return joined(c.errors);
 }
 
 GraphDesc toon_graph() {
-  GraphDesc g;
-  add(g, "geo", GeometryNode{});
-  add(g, "ramp", ColorRampNode{});
-  add(g, "toon", ToonDesc{});
-  add(g, "out", OutputNode{});
-  link(g, "geo", "facing", "ramp", "fac");
-  link(g, "ramp", "color", "toon", "color");
-  link(g, "toon", "closure", "out", "surface");
+  GraphDesc g{.nodes = {{"geo", GeometryNode{}}, {"ramp", ColorRampNode{}}, {"toon", ToonDesc{}}},
+              .links = {{"geo", "facing", "ramp", "fac"}, {"ramp", "color", "toon", "color"}}};
+  add_output(g, "toon");
   return g;
 }
 
@@ -161,16 +155,13 @@ TEST(GraphLowering, NodesThatDoNotReachTheOutputNeverRun) {
 
 TEST(GraphLowering, ConstantsFoldAway) {
   // (2 + 3) * 0.1 through a ramp: nothing depends on the hit, so no instruction is left.
-  GraphDesc g;
-  add(g, "a", MathNode{MathOp::add, false, 2.f, 3.f, 1.f});
-  add(g, "b", MathNode{MathOp::multiply, false, 0.f, 0.1f, 1.f});
-  add(g, "ramp", ColorRampNode{});
-  add(g, "d", DiffuseDesc{});
-  add(g, "out", OutputNode{});
-  link(g, "a", "value", "b", "a");
-  link(g, "b", "value", "ramp", "fac");
-  link(g, "ramp", "color", "d", "albedo");
-  link(g, "d", "closure", "out", "surface");
+  GraphDesc g{
+      .nodes = {{"a", MathNode{MathOp::add, false, 2.f, 3.f, 1.f}},
+                {"b", MathNode{MathOp::multiply, false, 0.f, 0.1f, 1.f}},
+                {"ramp", ColorRampNode{}},
+                {"d", DiffuseDesc{}}},
+      .links = {{"a", "value", "b", "a"}, {"b", "value", "ramp", "fac"}, {"ramp", "color", "d", "albedo"}}};
+  add_output(g, "d");
   const CompiledGraph c = compile(g);
   ASSERT_TRUE(c.program);
   EXPECT_TRUE(c.program->code.empty()) << c.program->code.size() << " instructions left";

@@ -6,6 +6,7 @@
 #include "core/compiler/compile.h"
 #include "core/document/tagged_variant.h"
 #include "support/graph_helpers.h"
+#include "support/messages.h"
 #include "support/render_helpers.h"
 #include "tests/compiler/graph_edit_ops.h"
 
@@ -344,15 +345,13 @@ TEST(GraphInputs, AFailedNodeIsReportedAndItsUsersStillLower) {
   add(g, "d", DiffuseDesc{ImageTextureDesc{"also_missing.png"}});
   add(g, "t", ToonDesc{});
   add(g, "m", MixClosureNode{});
-  add(g, "out", OutputNode{});
   link(g, "img", "color", "t", "color");
   link(g, "d", "closure", "m", "a");
   link(g, "t", "closure", "m", "b");
-  link(g, "m", "closure", "out", "surface");
+  add_output(g, "m");
   const CompiledGraph c = compile(g, kBase);
   EXPECT_FALSE(c.program);
-  std::string all;
-  for (const std::string& e : c.errors) all += e + "\n";
+  const std::string all = joined(c.errors);
   EXPECT_NE(all.find("\"img\""), std::string::npos) << all;
   EXPECT_NE(all.find("\"d\""), std::string::npos) << all;
 }

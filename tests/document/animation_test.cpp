@@ -295,11 +295,7 @@ TEST(AnimationCompile, TheCompilerRendersTheCurrentFrame) {
 
 TEST(AnimationCompile, StrokesMoveWithTheirObjectAndKeepTheirPlaces) {
   SceneDesc d = ball_scene();
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "ball";
-  e.count = 50;
-  d.strokes.push_back(e);
+  d.strokes.push_back(StrokeEmitterDesc{.name = "paint", .object = "ball", .count = 50});
   d.render.frame_start = 1;
   d.animation.push_back({"objects/ball/transform/translate", {key(1, {0, 0, 0}), key(5, {2, 1, 0})}});
   d.animation.push_back({"objects/ball/transform/rotate/0/degrees", {key(1, {10}), key(5, {100})}});

@@ -20,9 +20,7 @@ namespace inkray {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::breaking_edits;
-using testing::NamedEdit;
-using testing::shipped_scenes;
+using namespace inkray::testing;
 
 // problems_added as it would be with every item checked.
 std::vector<std::string> added_by_whole_checks(const SceneDesc& before, const SceneDesc& after) {

@@ -76,11 +76,7 @@ TEST(SceneLimits, RaysFromUntraceableOriginsMissInsteadOfAborting) {
 
 TEST(SceneLimits, StrokeVerticesHaveOneBudgetAcrossEmitters) {
   SceneDesc s = one_sphere();
-  StrokeEmitterDesc huge;
-  huge.name = "huge";
-  huge.object = "ball";
-  huge.count = 10000000;
-  huge.segments = 64;
+  const StrokeEmitterDesc huge{.name = "huge", .object = "ball", .count = 10000000, .segments = 64};
   s.strokes = {huge};
   ErrorLog log("s.json");
   check_scene(s, {}, log);
@@ -128,13 +124,8 @@ TEST(SceneLimits, ImageSizeIsCheckedFromTheHeaderBeforeDecoding) {
   // And as a brush image.
   s = one_sphere();
   s.base_dir = dir.path();
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "ball";
-  e.count = 10;
-  e.brush = BrushKind::image;
-  e.brush_image = "big.png";
-  s.strokes = {e};
+  s.strokes = {StrokeEmitterDesc{
+      .name = "paint", .object = "ball", .count = 10, .brush = BrushKind::image, .brush_image = "big.png"}};
   const CompileResult b = compile_scene(s);
   EXPECT_FALSE(b.scene);
   EXPECT_NE(joined(b.errors).find("strokes[0] \"paint\": "), std::string::npos) << joined(b.errors);
@@ -165,11 +156,7 @@ TEST(SceneLimits, MemoryEstimateIsCheckedBeforeBuilding) {
   SceneDesc s = one_sphere();
   s.render.width = 1920;
   s.render.height = 1080;
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "ball";
-  e.count = 1000000;
-  s.strokes = {e};
+  s.strokes = {StrokeEmitterDesc{.name = "paint", .object = "ball", .count = 1000000}};
   const MemoryEstimate estimate = estimate_memory(s);
   ASSERT_GE(estimate.items.size(), 3u);
   EXPECT_EQ(estimate.items[0].what, "strokes[0] (1000000 strokes)");  // largest first

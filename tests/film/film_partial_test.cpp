@@ -9,6 +9,8 @@
 #include "core/io/atomic_file.h"
 #include "tests/support/odd_film.h"
 
+#include "tests/support/file_helpers.h"
+
 #include <gtest/gtest.h>
 #include <tinyexr.h>
 
@@ -25,15 +27,8 @@ namespace fs = std::filesystem;
 
 class FilmPartial : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("inkray_film_partial_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  testing::ScratchFolder scratch_;  // removed with the fixture
+  const std::filesystem::path dir_ = scratch_.path();
 };
 
 using testing::every_first_hit_aov;

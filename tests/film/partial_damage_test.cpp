@@ -32,31 +32,22 @@ std::unique_ptr<Film> small_film(int w, int h) {
     for (int x = 0; x < w; ++x)
       for (uint32_t pass = 0; pass < 2; ++pass) {
         film->add_sample(x, y, pass, Color(float(x) / 3.f, float(y) + 0.1f, float(pass) * 1e-3f));
-        FirstHit hit;
-        hit.object = x % 3;
-        hit.depth = float(x + y) / 7.f;
-        film->add_first_hit(x, y, hit);
-        LineSample lines;
-        lines.coverage[1] = float(x) / 9.f;
-        lines.weight = 0.5f;
-        lines.rays = 2.f;
-        film->add_lines(x, y, lines);
+        film->add_first_hit(x, y, {.depth = float(x + y) / 7.f, .object = x % 3});
+        film->add_lines(x, y, {.coverage = {0.f, float(x) / 9.f}, .weight = 0.5f, .rays = 2.f});
       }
   return film;
 }
 
 PartialInfo small_info(int w, int h) {
-  PartialInfo info;
-  info.width = w;
-  info.height = h;
-  info.window = {0, 0, w, h};
-  info.first_pass = 0;
-  info.end_pass = 2;
-  info.tiles_done = {1};
-  info.seed = 3;
-  info.scene = R"({"format": "inkray-scene", "render": {"spp": 4}})";
-  info.assets = {{"meshes/m.obj", "0123456789abcdef"}};
-  return info;
+  return {.width = w,
+          .height = h,
+          .window = {0, 0, w, h},
+          .first_pass = 0,
+          .end_pass = 2,
+          .tiles_done = {1},
+          .seed = 3,
+          .scene = R"({"format": "inkray-scene", "render": {"spp": 4}})",
+          .assets = {{"meshes/m.obj", "0123456789abcdef"}}};
 }
 
 std::string encoded(const Film& film, const PartialInfo& info) {

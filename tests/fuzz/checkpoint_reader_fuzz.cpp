@@ -19,34 +19,26 @@ std::unique_ptr<Film> checkpoint_film(int w, int h, const std::vector<uint8_t>& 
       const bool done = tiles[size_t((y / 16) * tiles_x + x / 16)] != 0;
       for (uint32_t pass = 0; pass < (done ? 5u : 4u); ++pass) {
         film->add_sample(x, y, pass, Color(float(x) / 7.f, float(y) / 3.f, float(pass)));
-        FirstHit hit;
-        hit.object = (x + y) % 4;
-        hit.albedo = Color(0.25f * float(pass));
-        hit.depth = float(x) + 0.5f;
-        film->add_first_hit(x, y, hit);
+        film->add_first_hit(
+            x, y, {.albedo = Color(0.25f * float(pass)), .depth = float(x) + 0.5f, .object = (x + y) % 4});
         if (!aovs_and_lines) continue;
-        LineSample s;
-        s.coverage[0] = float(y) / 11.f;
-        s.weight = 1.f;
-        s.rays = 4.f;
-        film->add_lines(x, y, s);
+        film->add_lines(x, y, {.coverage = {float(y) / 11.f}, .weight = 1.f, .rays = 4.f});
       }
     }
   return film;
 }
 
 partial_oracle::Seed seed(int w, int h, std::vector<uint8_t> tiles, bool aovs_and_lines = true) {
-  PartialInfo info;
-  info.width = w;
-  info.height = h;
-  info.window = {0, 0, w, h};
-  info.first_pass = 0;
-  info.end_pass = 4;
-  info.tiles_done = tiles;
-  info.seed = 11;
-  info.frame = 4.f;
-  info.scene = R"({"format": "inkray-scene", "render": {"spp": 64}})";
-  info.assets = {{"meshes/knot.obj", "fedcba9876543210"}};
+  const PartialInfo info{.width = w,
+                         .height = h,
+                         .window = {0, 0, w, h},
+                         .first_pass = 0,
+                         .end_pass = 4,
+                         .tiles_done = tiles,
+                         .frame = 4.f,
+                         .seed = 11,
+                         .scene = R"({"format": "inkray-scene", "render": {"spp": 64}})",
+                         .assets = {{"meshes/knot.obj", "fedcba9876543210"}}};
   return partial_oracle::make_seed(*checkpoint_film(w, h, tiles, aovs_and_lines), info);
 }
 

@@ -33,14 +33,14 @@ Seed make_seed(int w, int h, bool pixels) {
     d.rays.push_back(uint32_t(i * 7919 + (i == 4 ? 0x80000000u : 0u)));
     d.kinds.push_back(kinds[i % 5]);
   }
-  PartialInfo render;
-  render.width = w;
-  render.height = h;
-  render.window = {0, 0, w, h};
-  render.frame = 12.5f;
-  render.seed = 42;
-  render.scene = R"({"format": "inkray-scene", "render": {"spp": 4}, "outlines": {"enabled": true}})";
-  render.assets = {{"meshes/bunny.obj", "0123456789abcdef"}, {"brushes/dry.png", "missing"}};
+  const PartialInfo render{
+      .width = w,
+      .height = h,
+      .window = {0, 0, w, h},
+      .frame = 12.5f,
+      .seed = 42,
+      .scene = R"({"format": "inkray-scene", "render": {"spp": 4}, "outlines": {"enabled": true}})",
+      .assets = {{"meshes/bunny.obj", "0123456789abcdef"}, {"brushes/dry.png", "missing"}}};
   s.bytes = encode_line_decisions(d, render);
   std::string error;
   if (!read_line_decisions_bytes(s.bytes, "seed.bin", &s.info, &s.decisions, &error))

@@ -8,18 +8,17 @@ namespace inkray {
 namespace {
 
 PartialInfo info_of(int w, int h, PixelWindow window) {
-  PartialInfo info;
-  info.width = w;
-  info.height = h;
-  info.window = window;
-  info.first_pass = 3;
-  info.end_pass = 6;
-  info.frame = 2.5f;
-  info.seed = 7;
-  info.scene =
-      R"({"format": "inkray-scene", "render": {"spp": 4, "max_depth": 8}, "objects": [{"name": "a"}]})";
-  info.assets = {{"meshes/bunny.obj", "0123456789abcdef"}, {"textures/wood.png", "missing"}};
-  return info;
+  return {
+      .width = w,
+      .height = h,
+      .window = window,
+      .first_pass = 3,
+      .end_pass = 6,
+      .frame = 2.5f,
+      .seed = 7,
+      .scene =
+          R"({"format": "inkray-scene", "render": {"spp": 4, "max_depth": 8}, "objects": [{"name": "a"}]})",
+      .assets = {{"meshes/bunny.obj", "0123456789abcdef"}, {"textures/wood.png", "missing"}}};
 }
 
 const std::vector<partial_oracle::Seed>& seeds() {

@@ -270,11 +270,7 @@ TEST(CreasePatches, NonUniformScaleMeasuresAnglesInTheWorld) {
 
 TEST(CreasePatches, StrokesHaveNone) {
   SceneDesc d = crease_scene(30.f);
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "mesh";
-  e.count = 40;
-  d.strokes.push_back(e);
+  d.strokes.push_back(StrokeEmitterDesc{.name = "paint", .object = "mesh", .count = 40});
   const CompileResult c = compile_scene(d);
   ASSERT_TRUE(c.scene) << joined(c.errors);
   ASSERT_EQ(c.scene->objects.size(), 5u);

@@ -23,12 +23,22 @@ std::shared_ptr<const ShapeBvh> unit_box() {
       std::make_shared<const Shape>(make_box(Point3(-0.5f), Point3(0.5f), Transform{})));
 }
 
-TEST(MovingInstance, PlacementInterpolatesTranslationAndRotation) {
+// The unit box moving as expected_placement says, alone in a committed scene.
+struct MovingBox {
   EmbreeScene scene;
-  const auto box = unit_box();
-  const uint32_t id =
-      scene.add_moving(box, expected_placement(0.f), expected_placement(1.f), nullptr, box->shared_shape());
-  scene.commit();
+  uint32_t id = 0;
+  MovingBox() {
+    const auto box = unit_box();
+    id =
+        scene.add_moving(box, expected_placement(0.f), expected_placement(1.f), nullptr, box->shared_shape());
+    scene.commit();
+  }
+};
+
+TEST(MovingInstance, PlacementInterpolatesTranslationAndRotation) {
+  const MovingBox moving;
+  const EmbreeScene& scene = moving.scene;
+  const uint32_t id = moving.id;
   EXPECT_TRUE(scene.moving(id));
   EXPECT_TRUE(scene.any_moving());
   for (const float t : {0.f, 0.2f, 0.5f, 0.8f, 1.f}) {
@@ -49,11 +59,9 @@ TEST(MovingInstance, PlacementInterpolatesTranslationAndRotation) {
 // box stands at the ray's instant decides hit or miss, and the hit lies on its surface
 // there with the normal of the face it is on.
 TEST(MovingInstance, HitsLieOnTheSurfaceWhereItStandsAtTheRaysInstant) {
-  EmbreeScene scene;
-  const auto box = unit_box();
-  const uint32_t id =
-      scene.add_moving(box, expected_placement(0.f), expected_placement(1.f), nullptr, box->shared_shape());
-  scene.commit();
+  const MovingBox moving;
+  const EmbreeScene& scene = moving.scene;
+  const uint32_t id = moving.id;
   int hits = 0;
   for (const float t : {0.f, 0.3f, 0.5f, 0.7f, 1.f}) {
     const Transform at = expected_placement(t);
@@ -108,10 +116,8 @@ TEST(MovingInstance, HitsLieOnTheSurfaceWhereItStandsAtTheRaysInstant) {
 // the box square on, within the half-diagonal 0.707) hits it. Interpolating the
 // matrices instead would shrink the box there by cos 45 and miss.
 TEST(MovingInstance, ATurningShapeKeepsItsSize) {
-  EmbreeScene scene;
-  const auto box = unit_box();
-  scene.add_moving(box, expected_placement(0.f), expected_placement(1.f), nullptr, box->shared_shape());
-  scene.commit();
+  const MovingBox moving;
+  const EmbreeScene& scene = moving.scene;
   Hit hit;
   EXPECT_TRUE(scene.intersect(Ray{Point3(0.68f, 0.f, 5.f), Vec3(0.f, 0.f, -1.f), 0.5f}, kInfinity, &hit));
   EXPECT_TRUE(scene.intersect(Ray{Point3(-0.68f, 0.f, 5.f), Vec3(0.f, 0.f, -1.f), 0.5f}, kInfinity, &hit));

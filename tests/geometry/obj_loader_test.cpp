@@ -55,12 +55,23 @@ void expect_valid_indices(const TriangleMeshData& m) {
   }
 }
 
-TEST(ObjLoader, CubeWithNormalsAndUvs) {
-  const TriangleMeshData m = load_ok(kMeshes / "cube.obj");  // its missing mtllib must not matter
+// A file that loads, with its indices checked.
+TriangleMeshData load_valid(const fs::path& file) {
+  const TriangleMeshData m = load_ok(file);
   expect_valid_indices(m);
-  EXPECT_EQ(m.indices.size(), 36u);
-  EXPECT_EQ(m.positions.size(), 24u);  // 8 corners split by 6 face normals
-  EXPECT_EQ(m.normals.size(), 24u);
+  return m;
+}
+
+// How many indices, positions and normals (0: none) the mesh holds.
+void expect_sizes(const TriangleMeshData& m, size_t indices, size_t positions, size_t normals) {
+  EXPECT_EQ(m.indices.size(), indices);
+  EXPECT_EQ(m.positions.size(), positions);
+  EXPECT_EQ(m.normals.size(), normals);
+}
+
+TEST(ObjLoader, CubeWithNormalsAndUvs) {
+  const TriangleMeshData m = load_valid(kMeshes / "cube.obj");  // its missing mtllib must not matter
+  expect_sizes(m, 36, 24, 24);                                  // 8 corners split by 6 face normals
   EXPECT_EQ(m.uvs.size(), 24u);
   for (std::size_t t = 0; t < m.indices.size() / 3; ++t) {
     const Vec3 n = glm::normalize(triangle_normal(m, t));
@@ -75,11 +86,8 @@ TEST(ObjLoader, CubeWithNormalsAndUvs) {
 }
 
 TEST(ObjLoader, CubeWithoutAttributesMergesShapes) {
-  const TriangleMeshData m = load_ok(kMeshes / "cube_positions.obj");
-  expect_valid_indices(m);
-  EXPECT_EQ(m.indices.size(), 36u);
-  EXPECT_EQ(m.positions.size(), 8u);
-  EXPECT_TRUE(m.normals.empty());
+  const TriangleMeshData m = load_valid(kMeshes / "cube_positions.obj");
+  expect_sizes(m, 36, 8, 0);
   EXPECT_TRUE(m.uvs.empty());
   float area = 0.f;
   for (std::size_t t = 0; t < m.indices.size() / 3; ++t) {
@@ -94,11 +102,8 @@ TEST(ObjLoader, CubeWithoutAttributesMergesShapes) {
 }
 
 TEST(ObjLoader, ConvexPolygonIsTriangulated) {
-  const TriangleMeshData m = load_ok(kMeshes / "pentagon.obj");
-  expect_valid_indices(m);
-  EXPECT_EQ(m.indices.size(), 9u);
-  EXPECT_EQ(m.positions.size(), 5u);
-  EXPECT_EQ(m.normals.size(), 5u);
+  const TriangleMeshData m = load_valid(kMeshes / "pentagon.obj");
+  expect_sizes(m, 9, 5, 5);
   float area = 0.f;
   for (std::size_t t = 0; t < 3; ++t) {
     EXPECT_GT(triangle_normal(m, t).z, 0.f);
@@ -108,8 +113,7 @@ TEST(ObjLoader, ConvexPolygonIsTriangulated) {
 }
 
 TEST(ObjLoader, ConcavePolygonIsTriangulatedWithoutOverlap) {
-  const TriangleMeshData m = load_ok(kMeshes / "concave.obj");
-  expect_valid_indices(m);
+  const TriangleMeshData m = load_valid(kMeshes / "concave.obj");
   ASSERT_EQ(m.indices.size(), 12u);
   float area = 0.f;
   for (std::size_t t = 0; t < 4; ++t) {
@@ -120,11 +124,8 @@ TEST(ObjLoader, ConcavePolygonIsTriangulatedWithoutOverlap) {
 }
 
 TEST(ObjLoader, PartialAttributesAreDropped) {
-  const TriangleMeshData m = load_ok(kMeshes / "mixed_attributes.obj");
-  expect_valid_indices(m);
-  EXPECT_EQ(m.indices.size(), 6u);
-  EXPECT_EQ(m.positions.size(), 4u);
-  EXPECT_TRUE(m.normals.empty());
+  const TriangleMeshData m = load_valid(kMeshes / "mixed_attributes.obj");
+  expect_sizes(m, 6, 4, 0);
 }
 
 TEST(ObjLoader, VerticesSplitOnlyWhereAttributesDiffer) {

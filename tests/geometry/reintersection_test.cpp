@@ -48,54 +48,58 @@ Ray ray_towards(Pcg32& rng, const Point3& target, float distance) {
   return {o, glm::normalize(target - o)};
 }
 
-TEST(GeometryReintersection, RandomSpheres) {
-  Pcg32 rng(1);
+// `trials` scenes of one shape each, from `place` (seeded `seed`): it adds the shape to
+// the scene and returns a ray shot at it from outside; the spawned rays of every hit checked.
+template <class Place>
+ReintersectionStats spawn_trials(uint64_t seed, int trials, bool closed, Place place) {
+  Pcg32 rng(seed);
   ReintersectionStats st;
-  for (int i = 0; i < 2000; ++i) {
+  for (int i = 0; i < trials; ++i) {
+    EmbreeScene scene;
+    const Ray ray = place(rng, scene, i);
+    check_spawned_rays(scene, ray, closed, &st, rng);
+  }
+  return st;
+}
+
+TEST(GeometryReintersection, RandomSpheres) {
+  const ReintersectionStats st = spawn_trials(1, 2000, true, [](Pcg32& rng, EmbreeScene& scene, int) {
     const float radius = log_uniform(rng, 1e-4f, 1e5f);
     // Positions up to 1e4 radii from the origin: beyond that a float cannot
     // place a ray near the sphere, let alone inside it.
     const Point3 center = random_dir(rng) * std::min(log_uniform(rng, 1e-4f, 1e5f), 1e4f * radius);
-    EmbreeScene scene;
     scene.add(Sphere{center, radius, Transform{}});
     scene.commit();
     const Point3 target = center + random_dir(rng) * radius * 0.99f;
-    check_spawned_rays(scene, ray_towards(rng, target, radius * log_uniform(rng, 1.1f, 100.f)), true, &st,
-                       rng);
-  }
+    return ray_towards(rng, target, radius * log_uniform(rng, 1.1f, 100.f));
+  });
   EXPECT_GT(st.hits, 1900);
   EXPECT_EQ(st.rehits, 0);
   EXPECT_EQ(st.escapes, 0);
 }
 
 TEST(GeometryReintersection, RandomTransformedSpheres) {
-  Pcg32 rng(2);
-  ReintersectionStats st;
-  for (int i = 0; i < 1000; ++i) {
+  const ReintersectionStats st = spawn_trials(2, 1000, true, [](Pcg32& rng, EmbreeScene& scene, int) {
     const float s = log_uniform(rng, 1e-3f, 1e3f);
     const Transform t =
         Transform::translate(random_dir(rng) * std::min(log_uniform(rng, 1e-3f, 1e4f), 1e4f * s)) *
         Transform::rotate(360.f * rng.next_float(), random_dir(rng)) *
         Transform::scale(Vec3(s, s * (0.5f + rng.next_float()), s * (0.5f + rng.next_float())));
-    EmbreeScene scene;
     scene.add(Sphere{Point3(0.f), 1.f, t});
     scene.commit();
     const Point3 target = t.point(random_dir(rng) * 0.5f);
-    check_spawned_rays(scene, ray_towards(rng, target, s * 50.f), true, &st, rng);
-  }
+    return ray_towards(rng, target, s * 50.f);
+  });
   EXPECT_GT(st.hits, 950);
   EXPECT_EQ(st.rehits, 0);
   EXPECT_EQ(st.escapes, 0);
 }
 
 TEST(GeometryReintersection, RandomTrianglesAndQuads) {
-  Pcg32 rng(3);
-  ReintersectionStats st;
-  for (int i = 0; i < 4000; ++i) {
+  const ReintersectionStats st = spawn_trials(3, 4000, false, [](Pcg32& rng, EmbreeScene& scene, int i) {
     const float size = log_uniform(rng, 1e-4f, 1e5f);
     const Point3 base = random_dir(rng) * std::min(log_uniform(rng, 1e-4f, 1e5f), 1e4f * size);
     const Vec3 e0 = random_dir(rng) * size, e1 = random_dir(rng) * size;
-    EmbreeScene scene;
     if (i % 2) {
       scene.add(make_quad(base, e0, e1, Transform{}));
     } else {
@@ -104,9 +108,8 @@ TEST(GeometryReintersection, RandomTrianglesAndQuads) {
     scene.commit();
     const float b0 = rng.next_float() * 0.5f, b1 = rng.next_float() * 0.5f;
     const Point3 target = base + b0 * e0 + b1 * e1;
-    check_spawned_rays(scene, ray_towards(rng, target, size * log_uniform(rng, 0.1f, 100.f)), false, &st,
-                       rng);
-  }
+    return ray_towards(rng, target, size * log_uniform(rng, 0.1f, 100.f));
+  });
   EXPECT_GT(st.hits, 3500);
   EXPECT_EQ(st.rehits, 0);
 }

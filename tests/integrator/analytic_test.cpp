@@ -6,9 +6,7 @@
 namespace inkray {
 namespace {
 
-using testing::mean_color;
-using testing::render_scene;
-using testing::small_scene;
+using namespace inkray::testing;
 
 SceneDesc sphere_in_environment(MaterialVariant material, Color environment) {
   SceneDesc d = small_scene(32, 32);

@@ -14,9 +14,7 @@
 namespace inkray {
 namespace {
 
-using testing::mean_color;
-using testing::render_scene;
-using testing::small_scene;
+using namespace inkray::testing;
 
 constexpr int kSize = 96;
 const Color kLit(0.9f, 0.5f, 0.3f);

@@ -11,9 +11,7 @@
 namespace inkray {
 namespace {
 
-using testing::mean_color;
-using testing::render_scene;
-using testing::small_scene;
+using namespace inkray::testing;
 
 constexpr int kSize = 96;
 
@@ -55,6 +53,17 @@ std::vector<bool> interior_mask(const SceneDesc& scene) {
   std::vector<bool> mask(img.pixels.size());
   for (size_t i = 0; i < mask.size(); ++i) mask[i] = img.pixels[i].g == 1.f;
   return mask;
+}
+
+// The scene rendered, and beside it the same scene in unlit white: how much of each
+// pixel the sphere covers.
+struct ImageAndCoverage {
+  RgbImage image, coverage;
+};
+ImageAndCoverage render_with_coverage(const SceneDesc& scene, int spp) {
+  SceneDesc white = scene;
+  white.materials[0].data = UnlitDesc{Color(1.f)};
+  return {render_scene(scene, spp), render_scene(white, spp)};
 }
 
 std::vector<Color> band_values(Color color, int bands) {
@@ -134,13 +143,8 @@ TEST(ToonIntegrator, ThresholdPlacesTheTerminatorAnalytically) {
     SCOPED_TRACE(t);
     ToonDesc toon = plain_toon(Color(1.f), 2, t);
     toon.shadow_color = Color(0.f);
-    SceneDesc d = far_sphere(toon, {directional({-1.f, 0.f, 0.f}, 0.7f)});
-    const RgbImage mask = [&] {
-      SceneDesc m = d;
-      m.materials[0].data = UnlitDesc{Color(1.f)};
-      return render_scene(m, 16);
-    }();
-    const RgbImage img = render_scene(d, 16);
+    const auto [img, mask] =
+        render_with_coverage(far_sphere(toon, {directional({-1.f, 0.f, 0.f}, 0.7f)}), 16);
     double lit = 0.0, disk = 0.0;
     for (size_t i = 0; i < img.pixels.size(); ++i) {
       lit += img.pixels[i].g;
@@ -254,13 +258,7 @@ TEST(ToonIntegrator, RimCoversTheOuterRing) {
   toon.rim_color = Color(0.5f);
   toon.rim_threshold = 0.5f;
   toon.rim_width = 0.6f;
-  SceneDesc d = far_sphere(toon, {directional({0.f, 0.f, -1.f})});
-  const RgbImage img = render_scene(d, 16);
-  const RgbImage mask = [&] {
-    SceneDesc m = d;
-    m.materials[0].data = UnlitDesc{Color(1.f)};
-    return render_scene(m, 16);
-  }();
+  const auto [img, mask] = render_with_coverage(far_sphere(toon, {directional({0.f, 0.f, -1.f})}), 16);
   double rim = 0.0, disk = 0.0;
   for (size_t i = 0; i < img.pixels.size(); ++i) {
     rim += std::max(0.f, img.pixels[i].g - 0.4f * mask.pixels[i].g) / 0.5f;

@@ -22,12 +22,7 @@ namespace inkray {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::dead_pid;
-using testing::read_file;
-using testing::ScratchFolder;
-using testing::write_file;
-
-using Names = std::vector<std::string>;
+using namespace inkray::testing;
 
 // In a child process: stages every file with "new <name>", writes the journal, renames the
 // first `renamed` files and dies (its lock goes with it), as a kill between renames would

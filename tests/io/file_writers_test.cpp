@@ -18,13 +18,7 @@ namespace inkray {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::dead_pid;
-using testing::make_older;
-using testing::read_file;
-using testing::ScratchFolder;
-using testing::write_file;
-
-using Names = std::vector<std::string>;
+using namespace inkray::testing;
 
 RgbImage test_image() {
   return RgbImage{

@@ -13,11 +13,7 @@ namespace inkray {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::read_file;
-using testing::ScratchFolder;
-using testing::write_file;
-
-using Names = std::vector<std::string>;
+using namespace inkray::testing;
 
 TEST(OutputSet, NothingIsReplacedUntilCommit) {
   ScratchFolder dir;

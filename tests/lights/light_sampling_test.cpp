@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -177,6 +178,58 @@ SceneDesc square_lamp_scene(float a, float h, float le, bool sheared = false) {
   return d;
 }
 
+struct GridEstimate {
+  double irradiance = 0.0;  // sum over the grid of radiance.g * cos / pdf
+  int checked_pdf = 0;      // samples whose direction was traced and light_pdf checked
+};
+
+// Samples `light` from ref at every point of the jittered grid (seeded `seed`): `check`
+// judges each sample; every 97th direction is traced and must meet `object`, where
+// `check_hit` judges the point and light_pdf must agree with the sample's pdf. With
+// `rim_may_miss` a direction that meets nothing is passed over (rays at a sphere's rim
+// may graze past it). Stops at the first fatal failure, as one loop in the test would.
+void sample_over_grid(
+    const RenderScene& scene, const Light& light, const LightReference& ref, uint64_t seed, uint32_t object,
+    bool rim_may_miss, GridEstimate& out, const std::function<void(const LightSample&)>& check,
+    const std::function<void(const LightSample&, const SurfaceInteraction&)>& check_hit =
+        [](const LightSample&, const SurfaceInteraction&) {}) {
+  Pcg32 rng(seed);
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const auto s = sample_light(scene, light, ref, grid_sample(i, j, rng));
+      ASSERT_TRUE(s);
+      check(*s);
+      if (::testing::Test::HasFatalFailure()) return;
+      out.irradiance += double(s->radiance.g * s->wi.y / s->pdf);
+      if ((i * kGrid + j) % 97 != 0) continue;
+      const auto on_light = trace(scene, ref.p, s->wi);
+      if (!on_light && rim_may_miss) continue;
+      ASSERT_TRUE(on_light);
+      ASSERT_EQ(on_light->object, object);
+      check_hit(*s, *on_light);
+      EXPECT_NEAR(light_pdf(scene, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
+      ++out.checked_pdf;
+    }
+}
+
+// light_pdf integrated over the directions from the origin that meet the light (where
+// `on_light` says a hit is on it): a grid of directions from `direction`, whose density
+// is `pdf`, seeded `seed`. 1 for a pdf that is one.
+template <class Direction>
+double light_pdf_integral(const RenderScene& scene, const Light& light, uint64_t seed, Direction direction,
+                          float pdf, const std::function<bool(const SurfaceInteraction&)>& on_light) {
+  const LightReference ref = origin_facing_up();
+  Pcg32 rng(seed);
+  double sum = 0.0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const Vec3 wi = direction(grid_sample(i, j, rng));
+      const auto hit = trace(scene, ref.p, wi);
+      if (hit && on_light(*hit)) sum += light_pdf(scene, light, ref, wi, *hit) / pdf;
+    }
+  return sum / double(kGrid * kGrid);
+}
+
 // Irradiance below the centre of a square of half-width a at height h, radiance
 // le: four corner-aligned rectangles (differential-area-to-rectangle form factor).
 float square_irradiance(float a, float h, float le) {
@@ -201,30 +254,21 @@ TEST(LightSampling, RectAreaLightIsSampledUniformlyInSolidAngle) {
   const float solid_angle = 4.f * std::asin(a * a / (a * a + h * h));
 
   const LightReference ref = origin_facing_up();
-  Pcg32 rng(7);
-  double irradiance = 0.0;
-  int checked_pdf = 0;
-  for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j) {
-      const auto s = sample_light(*scene, light, ref, grid_sample(i, j, rng));
-      ASSERT_TRUE(s);
-      ASSERT_FALSE(s->is_delta);
-      ASSERT_GT(s->wi.y, 0.f);
-      expect_color_near(s->radiance, Color(le), 1e-6f);
-      ASSERT_NEAR(s->pdf, 1.f / solid_angle, 1e-4f / solid_angle);
-      irradiance += double(s->radiance.g * s->wi.y / s->pdf);
-      if ((i * kGrid + j) % 97 == 0) {
-        const auto on_light = trace(*scene, ref.p, s->wi);
-        ASSERT_TRUE(on_light);
-        ASSERT_EQ(on_light->object, rect->object);
-        EXPECT_NEAR(glm::length(on_light->p - (ref.p + s->wi * (h / s->wi.y))), 0.f, 1e-4f);
-        EXPECT_NEAR(light_pdf(*scene, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
-        ++checked_pdf;
-      }
-    }
-  EXPECT_GT(checked_pdf, 600);
+  GridEstimate grid;
+  ASSERT_NO_FATAL_FAILURE(sample_over_grid(
+      *scene, light, ref, 7, rect->object, false, grid,
+      [&](const LightSample& s) {
+        ASSERT_FALSE(s.is_delta);
+        ASSERT_GT(s.wi.y, 0.f);
+        expect_color_near(s.radiance, Color(le), 1e-6f);
+        ASSERT_NEAR(s.pdf, 1.f / solid_angle, 1e-4f / solid_angle);
+      },
+      [&](const LightSample& s, const SurfaceInteraction& on_light) {
+        EXPECT_NEAR(glm::length(on_light.p - (ref.p + s.wi * (h / s.wi.y))), 0.f, 1e-4f);
+      }));
+  EXPECT_GT(grid.checked_pdf, 600);
   const float expected = square_irradiance(a, h, le);
-  EXPECT_NEAR(irradiance / double(kGrid * kGrid), expected, 0.001 * expected);
+  EXPECT_NEAR(grid.irradiance / double(kGrid * kGrid), expected, 0.001 * expected);
 
   // The emitter is one-sided: from above it sends nothing.
   const LightReference above{Point3(0.f, 2.f * h, 0.f), Vec3(0.f), Normal3(0.f, -1.f, 0.f)};
@@ -252,26 +296,15 @@ TEST(LightSampling, MeshAreaLightPdfIsInverseAreaInSolidAngle) {
   EXPECT_NEAR(mesh->area, area, 1e-5f);
   EXPECT_EQ(scene->objects[mesh->object].light, 0);
 
-  const LightReference ref = origin_facing_up();
-  Pcg32 rng(7);
-  int checked_pdf = 0;
-  for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j) {
-      const auto s = sample_light(*scene, light, ref, grid_sample(i, j, rng));
-      ASSERT_TRUE(s);
-      ASSERT_GT(s->wi.y, 0.f);
-      // The point lies on the plane y = h at distance h / wi.y, seen at cosine wi.y.
-      const float expected_pdf = sqr(h) / (area * s->wi.y * s->wi.y * s->wi.y);
-      ASSERT_NEAR(s->pdf, expected_pdf, 1e-4f * expected_pdf);
-      if ((i * kGrid + j) % 97 == 0) {
-        const auto on_light = trace(*scene, ref.p, s->wi);
-        ASSERT_TRUE(on_light);
-        ASSERT_EQ(on_light->object, mesh->object);
-        EXPECT_NEAR(light_pdf(*scene, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
-        ++checked_pdf;
-      }
-    }
-  EXPECT_GT(checked_pdf, 600);
+  GridEstimate grid;
+  ASSERT_NO_FATAL_FAILURE(sample_over_grid(
+      *scene, light, origin_facing_up(), 7, mesh->object, false, grid, [&](const LightSample& s) {
+        ASSERT_GT(s.wi.y, 0.f);
+        // The point lies on the plane y = h at distance h / wi.y, seen at cosine wi.y.
+        const float expected_pdf = sqr(h) / (area * s.wi.y * s.wi.y * s.wi.y);
+        ASSERT_NEAR(s.pdf, expected_pdf, 1e-4f * expected_pdf);
+      }));
+  EXPECT_GT(grid.checked_pdf, 600);
 }
 
 // Over the directions that reach the lamp, light_pdf integrates to 1, for the
@@ -281,19 +314,15 @@ TEST(LightSampling, AreaLightPdfIntegratesToOne) {
   for (const bool sheared : {false, true}) {
     const auto scene = compile(square_lamp_scene(1.f, 1.f, 1.f, sheared));
     ASSERT_TRUE(scene);
-    const Light& light = scene->lights[0];
-    const LightReference ref = origin_facing_up();
-    Pcg32 rng(11);
-    double sum = 0.0;
-    for (int i = 0; i < kGrid; ++i)
-      for (int j = 0; j < kGrid; ++j) {
-        const Vec3 h = sample_uniform_hemisphere(grid_sample(i, j, rng));
-        const Vec3 wi(h.x, h.z, h.y);  // the hemisphere around +y
-        const auto on_light = trace(*scene, ref.p, wi);
-        if (on_light && scene->objects[on_light->object].light == 0)
-          sum += light_pdf(*scene, light, ref, wi, *on_light) / uniform_hemisphere_pdf();
-      }
-    EXPECT_NEAR(sum / double(kGrid * kGrid), 1.0, 0.01) << (sheared ? "parallelogram" : "rectangle");
+    const double integral = light_pdf_integral(
+        *scene, scene->lights[0], 11,
+        [](Vec2 u) {
+          const Vec3 h = sample_uniform_hemisphere(u);
+          return Vec3(h.x, h.z, h.y);  // the hemisphere around +y
+        },
+        uniform_hemisphere_pdf(),
+        [&](const SurfaceInteraction& hit) { return scene->objects[hit.object].light == 0; });
+    EXPECT_NEAR(integral, 1.0, 0.01) << (sheared ? "parallelogram" : "rectangle");
   }
 }
 
@@ -318,31 +347,18 @@ TEST(LightSampling, SphereLightSamplesTheConeItSubtends) {
   const float cos_max = std::sqrt(1.f - sqr(r / d));
   const float cone_pdf = 1.f / (2.f * kPi * (1.f - cos_max));
 
-  const LightReference ref = origin_facing_up();
-  Pcg32 rng(3);
-  double irradiance = 0.0;
-  int checked_pdf = 0;
-  for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j) {
-      const auto s = sample_light(*scene, light, ref, grid_sample(i, j, rng));
-      ASSERT_TRUE(s);
-      ASSERT_GE(s->wi.y, cos_max - 1e-4f);  // inside the cone
-      ASSERT_NEAR(s->pdf, cone_pdf, 1e-4f * cone_pdf);
-      expect_color_near(s->radiance, Color(le), 1e-6f);
-      irradiance += double(s->radiance.g * s->wi.y / s->pdf);
-      if ((i * kGrid + j) % 97 == 0) {
-        const auto on_light = trace(*scene, ref.p, s->wi);
-        // Directions at the very rim may graze past the sphere.
-        if (!on_light) continue;
-        ASSERT_EQ(on_light->object, sphere->object);
-        EXPECT_NEAR(light_pdf(*scene, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
-        ++checked_pdf;
-      }
-    }
-  EXPECT_GT(checked_pdf, 600);
+  GridEstimate grid;
+  // Directions at the very rim may graze past the sphere.
+  ASSERT_NO_FATAL_FAILURE(sample_over_grid(*scene, light, origin_facing_up(), 3, sphere->object, true, grid,
+                                           [&](const LightSample& s) {
+                                             ASSERT_GE(s.wi.y, cos_max - 1e-4f);  // inside the cone
+                                             ASSERT_NEAR(s.pdf, cone_pdf, 1e-4f * cone_pdf);
+                                             expect_color_near(s.radiance, Color(le), 1e-6f);
+                                           }));
+  EXPECT_GT(grid.checked_pdf, 600);
   // A sphere straight above a surface: E = pi le (r / d)^2.
   const float expected = kPi * le * sqr(r / d);
-  EXPECT_NEAR(irradiance / double(kGrid * kGrid), expected, 0.002 * expected);
+  EXPECT_NEAR(grid.irradiance / double(kGrid * kGrid), expected, 0.002 * expected);
 }
 
 // Over the directions that reach the sphere, light_pdf integrates to 1
@@ -351,17 +367,10 @@ TEST(LightSampling, SphereLightPdfIntegratesToOneOverItsCone) {
   const auto scene = compile(sphere_lamp_scene({0.5f, 2.f, -0.5f}, 1.f, 1.f, false));
   ASSERT_TRUE(scene);
   const Light& light = scene->lights[0];
-  const LightReference ref = origin_facing_up();
-  Pcg32 rng(5);
-  double sum = 0.0;
-  for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j) {
-      const Vec3 wi = sample_uniform_sphere(grid_sample(i, j, rng));
-      const auto on_light = trace(*scene, ref.p, wi);
-      if (on_light && on_light->object == std::get<SphereAreaLight>(light).object)
-        sum += light_pdf(*scene, light, ref, wi, *on_light) / uniform_sphere_pdf();
-    }
-  EXPECT_NEAR(sum / double(kGrid * kGrid), 1.0, 0.01);
+  const double integral = light_pdf_integral(
+      *scene, light, 5, [](Vec2 u) { return sample_uniform_sphere(u); }, uniform_sphere_pdf(),
+      [&](const SurfaceInteraction& hit) { return hit.object == std::get<SphereAreaLight>(light).object; });
+  EXPECT_NEAR(integral, 1.0, 0.01);
 }
 
 // Inside a sphere (here two-sided, so it shines inwards) the whole sphere is

@@ -112,27 +112,39 @@ TEST(ProceduralBlend, FacZeroReturnsA) {
   }
 }
 
+// Each mode by hand at fac 1 and fac 0.5, for a = (0.2, 0.6, 0.9), b = (0.5, 0.3, 0.8).
+struct BlendByHand {
+  const char* name;
+  BlendMode mode;
+  Color at_one, at_half;
+};
+const BlendByHand kBlendsByHand[] = {
+    {"mix", BlendMode::mix, kB, {0.35f, 0.45f, 0.85f}},
+    {"multiply", BlendMode::multiply, {0.1f, 0.18f, 0.72f}, {0.15f, 0.39f, 0.81f}},
+    // screen at 1: 1 - (1-b)(1-a) = 1 - (0.5*0.8, 0.7*0.4, 0.2*0.1);
+    // at 0.5: 1 - (0.5 + 0.5(1-b))(1-a) = 1 - (0.75*0.8, 0.85*0.4, 0.6*0.1).
+    {"screen", BlendMode::screen, {0.6f, 0.72f, 0.98f}, {0.4f, 0.66f, 0.94f}},
+    // overlay at 1: r has a < 0.5 -> 2ab = 0.2; g, b: 1 - 2(1-b)(1-a) = 1 - 0.56, 1 - 0.04;
+    // at 0.5: r = 0.2 * (0.5 + 0.5) = 0.2; g = 1 - (0.5 + 0.7) * 0.4 = 0.52; b = 1 - (0.5 + 0.2) * 0.1 =
+    // 0.93.
+    {"overlay", BlendMode::overlay, {0.2f, 0.44f, 0.96f}, {0.2f, 0.52f, 0.93f}},
+    {"add", BlendMode::add, {0.7f, 0.9f, 1.7f}, {0.45f, 0.75f, 1.3f}},
+};
+
 TEST(ProceduralBlend, FacOneHandValues) {
-  // a = (0.2, 0.6, 0.9), b = (0.5, 0.3, 0.8).
-  expect_color_near(blend_colors(BlendMode::mix, 1.f, kA, kB), kB);
-  expect_color_near(blend_colors(BlendMode::multiply, 1.f, kA, kB), {0.1f, 0.18f, 0.72f});
-  // screen: 1 - (1-b)(1-a) = 1 - (0.5*0.8, 0.7*0.4, 0.2*0.1).
-  expect_color_near(blend_colors(BlendMode::screen, 1.f, kA, kB), {0.6f, 0.72f, 0.98f});
-  // overlay: r has a < 0.5 -> 2ab = 0.2; g, b: 1 - 2(1-b)(1-a) = 1 - 0.56, 1 - 0.04.
-  expect_color_near(blend_colors(BlendMode::overlay, 1.f, kA, kB), {0.2f, 0.44f, 0.96f});
-  expect_color_near(blend_colors(BlendMode::add, 1.f, kA, kB), {0.7f, 0.9f, 1.7f});
+  for (const BlendByHand& c : kBlendsByHand) {
+    SCOPED_TRACE(c.name);
+    expect_color_near(blend_colors(c.mode, 1.f, kA, kB), c.at_one);
+  }
   // fac above 1 clamps to 1.
   expect_color_near(blend_colors(BlendMode::add, 7.f, kA, kB), {0.7f, 0.9f, 1.7f});
 }
 
 TEST(ProceduralBlend, FacHalfHandValues) {
-  expect_color_near(blend_colors(BlendMode::mix, 0.5f, kA, kB), {0.35f, 0.45f, 0.85f});
-  expect_color_near(blend_colors(BlendMode::multiply, 0.5f, kA, kB), {0.15f, 0.39f, 0.81f});
-  // screen: 1 - (0.5 + 0.5(1-b))(1-a) = 1 - (0.75*0.8, 0.85*0.4, 0.6*0.1).
-  expect_color_near(blend_colors(BlendMode::screen, 0.5f, kA, kB), {0.4f, 0.66f, 0.94f});
-  // overlay: r = 0.2 * (0.5 + 0.5) = 0.2; g = 1 - (0.5 + 0.7) * 0.4 = 0.52; b = 1 - (0.5 + 0.2) * 0.1 = 0.93.
-  expect_color_near(blend_colors(BlendMode::overlay, 0.5f, kA, kB), {0.2f, 0.52f, 0.93f});
-  expect_color_near(blend_colors(BlendMode::add, 0.5f, kA, kB), {0.45f, 0.75f, 1.3f});
+  for (const BlendByHand& c : kBlendsByHand) {
+    SCOPED_TRACE(c.name);
+    expect_color_near(blend_colors(c.mode, 0.5f, kA, kB), c.at_half);
+  }
 }
 
 TEST(ProceduralBlend, FiniteForExtremeInputs) {

@@ -19,6 +19,7 @@ namespace {
 using testing::small_scene;
 
 using Rendered = testing::RenderedFilm;
+using testing::draw_outlines;
 using testing::make_object;
 
 Rendered render(const SceneDesc& desc, int spp, AovSet aovs = {}) {
@@ -76,12 +77,7 @@ SceneDesc glass_scene(float smooth_angle) {
   d.objects.push_back(blob);
   d.objects.push_back(make_object("ball", SphereDesc{{1.3f, 0.9f, 0.f}, 0.9f}, "glass"));
   d.objects.push_back(make_object("box", BoxDesc{{0.9f, 0.f, -3.f}, {2.1f, 1.6f, -2.f}}, "orange"));
-  d.outlines.enabled = true;
-  d.outlines.width = 2.f;
-  d.outlines.reference_height = 120.f;
-  d.outlines.silhouette.enabled = true;
-  d.outlines.object.enabled = true;
-  d.outlines.crease.enabled = true;
+  draw_outlines(d.outlines, 2.f, 120.f, {.silhouette = true, .object = true, .crease = true});
   return d;
 }
 
@@ -119,11 +115,8 @@ SceneDesc quad_in_front_of_quad(int width, int height, float width_px) {
       make_object("back", QuadDesc{{-20.f, -20.f, 0.f}, {40.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, "grey"));
   d.objects.push_back(
       make_object("front", QuadDesc{{-1.f, -20.f, 2.f}, {2.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, "grey"));
-  d.outlines.enabled = true;
-  d.outlines.object.enabled = false;
-  d.outlines.silhouette.enabled = true;
-  d.outlines.reference_height = float(height);  // widths in this image's own pixels
-  d.outlines.width = width_px;
+  // Widths in this image's own pixels.
+  draw_outlines(d.outlines, width_px, float(height), {.silhouette = true, .object = false});
   return d;
 }
 
@@ -189,12 +182,7 @@ TEST(LineQuality, DepthLinesDoNotFloodARecedingPlane) {
   d.materials.push_back({"grey", DiffuseDesc{Color(0.5f)}, {}});
   d.objects.push_back(
       make_object("ground", QuadDesc{{-500.f, 0.f, -500.f}, {0.f, 0.f, 1000.f}, {1000.f, 0.f, 0.f}}, "grey"));
-  d.outlines.enabled = true;
-  d.outlines.silhouette.enabled = false;
-  d.outlines.object.enabled = false;
-  d.outlines.depth.enabled = true;
-  d.outlines.reference_height = 90.f;
-  d.outlines.width = 2.f;
+  draw_outlines(d.outlines, 2.f, 90.f, {.silhouette = false, .object = false, .depth = true});
   EXPECT_EQ(total(render(d, 8).aov(Aov::outline_depth)), 0.0);
   d.objects.push_back(make_object("box", BoxDesc{{-1.f, 0.f, -1.f}, {1.f, 2.f, 1.f}}, "grey"));
   EXPECT_GT(total(render(d, 8).aov(Aov::outline_depth)), 50.0);
@@ -209,13 +197,8 @@ SceneDesc crease_scene(const char* base_dir, const char* mesh, Point3 eye, float
   d.camera.vfov = 40.f;
   d.materials.push_back({"grey", DiffuseDesc{Color(0.5f)}, {}});
   d.objects.push_back(make_object("mesh", MeshDesc{mesh, 30.f}, "grey"));
-  d.outlines.enabled = true;
-  d.outlines.silhouette.enabled = false;
-  d.outlines.object.enabled = false;
-  d.outlines.crease.enabled = true;
+  draw_outlines(d.outlines, 1.5f, 160.f, {.silhouette = false, .object = false, .crease = true});
   d.outlines.crease.threshold = threshold;
-  d.outlines.reference_height = 160.f;
-  d.outlines.width = 1.5f;
   return d;
 }
 

@@ -12,6 +12,7 @@
 namespace inkray {
 namespace {
 
+using testing::draw_outlines;
 using testing::small_scene;
 
 using Rendered = testing::RenderedFilm;
@@ -30,11 +31,8 @@ SceneDesc quad_in_front_of_quad(int width, int height) {
       {"back", QuadDesc{{-20.f, -20.f, 0.f}, {40.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, {}, "grey", true, {}});
   d.objects.push_back(
       {"front", QuadDesc{{-1.f, -20.f, 2.f}, {2.f, 0.f, 0.f}, {0.f, 40.f, 0.f}}, {}, "grey", true, {}});
-  d.outlines.enabled = true;
-  d.outlines.object.enabled = false;
-  d.outlines.silhouette.enabled = true;
-  d.outlines.reference_height = float(height);  // widths in this image's own pixels
-  d.outlines.width = 4.f;
+  // Widths in this image's own pixels.
+  draw_outlines(d.outlines, 4.f, float(height), {.silhouette = true, .object = false});
   d.outlines.quality = 4;
   return d;
 }
@@ -129,13 +127,8 @@ SceneDesc flush_light(bool object_lines) {
       {"ceiling", QuadDesc{{-10.f, 0.f, -10.f}, {20.f, 0.f, 0.f}, {0.f, 0.f, 20.f}}, {}, "white", true, {}});
   d.objects.push_back(
       {"lamp", QuadDesc{{-1.f, -0.001f, -1.f}, {2.f, 0.f, 0.f}, {0.f, 0.f, 2.f}}, {}, "light", true, {}});
-  d.outlines.enabled = true;
-  d.outlines.reference_height = 96.f;
-  d.outlines.width = 3.f;
-  d.outlines.silhouette.enabled = true;
-  d.outlines.object.enabled = object_lines;
-  d.outlines.crease.enabled = true;
-  d.outlines.depth.enabled = true;
+  draw_outlines(d.outlines, 3.f, 96.f,
+                {.silhouette = true, .object = object_lines, .crease = true, .depth = true});
   return d;
 }
 
@@ -167,10 +160,7 @@ SceneDesc mirror_scene(bool stop_lines) {
   d.objects.push_back(
       {"mirror", QuadDesc{{-10.f, -10.f, 0.f}, {20.f, 0.f, 0.f}, {0.f, 20.f, 0.f}}, {}, "mirror", true, {}});
   d.objects.push_back({"ball", SphereDesc{{0.f, 0.f, 8.f}, 1.f}, {}, "white", true, {}});
-  d.outlines.enabled = true;
-  d.outlines.reference_height = 64.f;
-  d.outlines.width = 2.f;
-  d.outlines.silhouette.enabled = true;
+  draw_outlines(d.outlines, 2.f, 64.f, {.silhouette = true});
   return d;
 }
 

@@ -20,15 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-SceneDesc tiny_cornell() {
-  const auto loaded = load_scene(fs::path(INKRAY_SOURCE_DIR) / "scenes" / "cornell.json");
-  EXPECT_TRUE(loaded.scene);
-  SceneDesc d = loaded.scene ? *loaded.scene : SceneDesc{};
-  d.render.width = 24;
-  d.render.height = 16;
-  return d;
-}
-
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("inkray_export_test_" + name);
   fs::remove_all(dir);
@@ -45,6 +36,18 @@ SceneDesc example(const std::string& name, int width, int height) {
   return d;
 }
 
+// `scene` rendered at `spp` samples on `threads` threads and written to `output`.
+ExportRequest request(SceneDesc scene, fs::path output, int spp, int threads) {
+  ExportRequest r;
+  r.scene = std::move(scene);
+  r.output = std::move(output);
+  r.spp = spp;
+  r.threads = threads;
+  return r;
+}
+
+SceneDesc tiny_cornell() { return example("cornell.json", 24, 16); }
+
 void wait_done(const ExportJob& job) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!job.done() && std::chrono::steady_clock::now() < deadline)
@@ -56,11 +59,7 @@ TEST(ExportJob, WritesPngAndExrWithAovsAtSceneSize) {
   const fs::path dir = fresh_dir("ok");
   for (const char* name : {"out.png", "out.exr"}) {
     SCOPED_TRACE(name);
-    ExportRequest r;
-    r.scene = tiny_cornell();
-    r.output = dir / name;
-    r.spp = 4;
-    r.threads = 2;
+    ExportRequest r = request(tiny_cornell(), dir / name, 4, 2);
     r.aovs = {Aov::albedo};
     ExportJob job(r);
     wait_done(job);
@@ -95,11 +94,7 @@ TEST(ExportJob, WritesPngAndExrWithAovsAtSceneSize) {
 // denoised estimate in the progress figures.
 TEST(ExportJob, DenoiseWritesTheDenoisedAndTheRawImage) {
   const fs::path dir = fresh_dir("denoise");
-  ExportRequest r;
-  r.scene = example("cornell_outlines.json", 48, 32);
-  r.output = dir / "out.pfm";
-  r.spp = 8;
-  r.threads = 2;
+  ExportRequest r = request(example("cornell_outlines.json", 48, 32), dir / "out.pfm", 8, 2);
   r.denoise = true;
   ExportJob job(r);
   wait_done(job);
@@ -117,11 +112,7 @@ TEST(ExportJob, DenoiseWritesTheDenoisedAndTheRawImage) {
 
 TEST(ExportJob, UnwritablePathReportsTheFile) {
   const fs::path dir = fresh_dir("bad");
-  ExportRequest r;
-  r.scene = tiny_cornell();
-  r.output = dir / "missing_folder" / "out.png";
-  r.spp = 1;
-  r.threads = 1;
+  ExportRequest r = request(tiny_cornell(), dir / "missing_folder" / "out.png", 1, 1);
   ExportJob job(r);
   wait_done(job);
   EXPECT_NE(job.error().find(r.output.string()), std::string::npos) << job.error();
@@ -133,11 +124,7 @@ TEST(ExportJob, UnwritablePathReportsTheFile) {
 // image either, found before rendering.
 TEST(ExportJob, AFailedAovLeavesNoImage) {
   const fs::path dir = fresh_dir("aov");
-  ExportRequest r;
-  r.scene = tiny_cornell();
-  r.output = dir / "out.png";
-  r.spp = 1;
-  r.threads = 1;
+  ExportRequest r = request(tiny_cornell(), dir / "out.png", 1, 1);
   r.aovs = {Aov::albedo, Aov::depth};
   const fs::path depth = ExportJob::aov_path(r.output, Aov::depth);
   fs::create_directory(depth);  // a folder where the depth AOV should go
@@ -157,12 +144,7 @@ TEST(ExportJob, AFailedAovLeavesNoImage) {
 TEST(ExportJob, CancelStopsThePassInFlight) {
   const fs::path dir = fresh_dir("cancel");
   const SceneDesc d = testing::white_room_scene(800, 600);
-  ExportRequest request;
-  request.scene = d;
-  request.output = dir / "room.png";
-  request.spp = 4;
-  request.threads = 1;
-  ExportJob job(request);
+  ExportJob job(request(d, dir / "room.png", 4, 1));
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   job.cancel();
   wait_done(job);
@@ -190,11 +172,8 @@ TEST(ExportJob, AllThreadsWriteTheSameImageAsOne) {
     SCOPED_TRACE(scene);
     std::vector<RgbImage> images, albedos;
     for (int threads : {1, 2, 0}) {
-      ExportRequest r;
-      r.scene = example(scene, 48, 32);
-      r.output = dir / ("t" + std::to_string(threads) + ".pfm");
-      r.spp = 6;
-      r.threads = threads;
+      ExportRequest r =
+          request(example(scene, 48, 32), dir / ("t" + std::to_string(threads) + ".pfm"), 6, threads);
       r.aovs = {Aov::albedo};
       ExportJob job(r);
       wait_done(job);
@@ -223,12 +202,8 @@ TEST(ExportJob, ThreadsForTheViewportLeaveItOne) {
 // never beyond the time limit.
 TEST(ExportJob, ProgressFiguresMoveForwardAndEndAtTheTarget) {
   const fs::path dir = fresh_dir("progress");
-  ExportRequest r;
-  r.scene = example("cornell.json", 64, 48);
-  r.output = dir / "out.png";
-  r.spp = 40;
+  ExportRequest r = request(example("cornell.json", 64, 48), dir / "out.png", 40, 2);
   r.time_seconds = 600.0;
-  r.threads = 2;
   ExportJob job(r);
   ExportProgress last;
   int reads = 0;
@@ -274,12 +249,9 @@ TEST(ExportJob, ProgressFiguresMoveForwardAndEndAtTheTarget) {
 // is below the target, long before the cap.
 TEST(ExportJob, StopsAtTheNoiseTarget) {
   const fs::path dir = fresh_dir("noise");
-  ExportRequest r;
-  r.scene = example("toon.json", 48, 32);  // flat bands: a few dozen samples reach 2%
-  r.output = dir / "out.pfm";
-  r.spp = 1 << 20;
+  ExportRequest r = request(example("toon.json", 48, 32), dir / "out.pfm", 1 << 20,
+                            2);  // flat bands: a few dozen samples reach 2%
   r.noise_target = 0.02;
-  r.threads = 2;
   ExportJob job(r);
   wait_done(job);
   ASSERT_EQ(job.error(), "");

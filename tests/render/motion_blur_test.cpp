@@ -149,13 +149,8 @@ SceneDesc busy_scene() {
   light.name = "lamp";
   light.data = PointLightDesc{Point3(2.f, 4.f, 3.f), Color(1.f), 20.f};
   d.lights = {light};
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "ball";
-  e.count = 150;
-  e.width_min = 0.06f;
-  e.width_max = 0.1f;
-  d.strokes = {e};
+  d.strokes = {StrokeEmitterDesc{
+      .name = "paint", .object = "ball", .count = 150, .width_min = 0.06f, .width_max = 0.1f}};
   d.animation = {linear_track("objects/ball/transform/translate", {-1.f, 0.f, 0.f}, {1.f, 0.f, 0.f})};
   return d;
 }

@@ -15,12 +15,8 @@ namespace {
 
 TEST(ProgressiveRenderer, ANewDocumentSupersedesABuildInFlight) {
   SceneDesc heavy = testing::one_sphere_scene(32, 24);
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "ball";
-  e.count = 1500000;  // seconds of building
-  e.seed = 9191;
-  heavy.strokes = {e};
+  // 1.5 million strokes: seconds of building.
+  heavy.strokes = {StrokeEmitterDesc{.name = "paint", .object = "ball", .seed = 9191, .count = 1500000}};
   SceneDesc light = testing::one_sphere_scene(32, 24);
   light.render.spp = 2;
 

@@ -19,6 +19,9 @@
 
 namespace inkray::testing {
 
+// File names, as ScratchFolder::entries lists them.
+using Names = std::vector<std::string>;
+
 // A fresh folder named after the running test, removed afterwards.
 class ScratchFolder {
  public:

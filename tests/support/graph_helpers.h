@@ -18,13 +18,18 @@ inline void link(GraphDesc& g, std::string from, std::string output, std::string
   g.links.push_back({std::move(from), std::move(output), std::move(to), std::move(input)});
 }
 
+// The output node "out", with the closure node `surface` wired to it as the material.
+inline void add_output(GraphDesc& g, const std::string& surface) {
+  add(g, "out", OutputNode{});
+  link(g, surface, "closure", "out", "surface");
+}
+
 // A plain closure as a graph: the closure node wired to an output.
 template <class Closure>
 GraphDesc closure_graph(const Closure& closure) {
   GraphDesc g;
   add(g, "surface", closure);
-  add(g, "out", OutputNode{});
-  link(g, "surface", "closure", "out", "surface");
+  add_output(g, "surface");
   return g;
 }
 

@@ -19,6 +19,22 @@ inline ObjectDesc make_object(std::string name, ShapeVariant shape, std::string 
   return o;
 }
 
+// Which of the common line types draw; unnamed ones keep OutlineDesc's defaults.
+struct LineTypesOn {
+  bool silhouette = true, object = true, crease = false, depth = false;
+};
+
+// Outlines on, `width` pixels wide in an image `reference_height` tall, the line types `on`.
+inline void draw_outlines(OutlineDesc& outlines, float width, float reference_height, LineTypesOn on) {
+  outlines.enabled = true;
+  outlines.width = width;
+  outlines.reference_height = reference_height;
+  outlines.silhouette.enabled = on.silhouette;
+  outlines.object.enabled = on.object;
+  outlines.crease.enabled = on.crease;
+  outlines.depth.enabled = on.depth;
+}
+
 // A compiled scene rendered for `spp` passes, kept with its session so tests
 // can read the film's AOVs.
 struct RenderedFilm {
@@ -54,10 +70,16 @@ inline size_t differing_pixels(const RgbImage& a, const RgbImage& b) {
   return n;
 }
 
-inline SceneDesc small_scene(int width, int height) {
+// An empty scene of width x height pixels, its other settings the defaults.
+inline SceneDesc sized_scene(int width, int height) {
   SceneDesc d;
   d.render.width = width;
   d.render.height = height;
+  return d;
+}
+
+inline SceneDesc small_scene(int width, int height) {
+  SceneDesc d = sized_scene(width, height);
   d.render.max_depth = 64;
   return d;
 }

@@ -16,12 +16,7 @@ namespace inkray {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::dead_pid;
-using testing::read_file;
-using testing::ScratchFolder;
-using testing::write_file;
-
-using Names = std::vector<std::string>;
+using namespace inkray::testing;
 
 ino_t inode_of(const fs::path& file) {
   struct stat st {};

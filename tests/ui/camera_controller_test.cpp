@@ -9,11 +9,7 @@ namespace inkray {
 namespace {
 
 CameraDesc test_camera() {
-  CameraDesc c;
-  c.look_from = Point3(0.f, 0.f, 5.f);
-  c.look_at = Point3(0.f);
-  c.vfov = 40.f;
-  return c;
+  return {.look_from = Point3(0.f, 0.f, 5.f), .look_at = Point3(0.f), .vfov = 40.f};
 }
 
 TEST(CameraController, OrbitKeepsTargetAndDistance) {

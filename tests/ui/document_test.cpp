@@ -5,6 +5,8 @@
 #include "ui/model/autosave.h"
 #include "ui/model/document.h"
 
+#include "tests/support/file_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -19,15 +21,8 @@ namespace {
 
 class DocumentFiles : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("inkray_document_test_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
+  testing::ScratchFolder scratch_;  // removed with the fixture
+  const std::filesystem::path dir_ = scratch_.path();
 };
 
 TEST_F(DocumentFiles, SaveThenOpenRoundTrips) {

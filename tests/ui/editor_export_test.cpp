@@ -15,9 +15,7 @@
 namespace inkray {
 namespace {
 
-using testing::editor_command;
-using testing::editor_unavailable;
-using testing::run_command;
+using namespace inkray::testing;
 
 TEST(EditorExport, ThroughTheDialogOnAllCoresToTheChosenFile) {
   if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;

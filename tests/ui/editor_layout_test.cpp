@@ -18,9 +18,7 @@
 namespace inkray {
 namespace {
 
-using testing::editor_command;
-using testing::editor_unavailable;
-using testing::run_command;
+using namespace inkray::testing;
 
 struct Rect {
   float x0 = 0, y0 = 0, x1 = 0, y1 = 0;

@@ -16,10 +16,7 @@
 namespace inkray {
 namespace {
 
-using testing::editor_unavailable;
-using testing::printed_numbers;
-using testing::run_editor_script;
-using testing::ScratchFolder;
+using namespace inkray::testing;
 
 // The document is at frame 12; mask.b is keyed 0 at frame 1 and 2.3 at frame 24
 // (1.1 at frame 12) over a stored 5.

@@ -3,26 +3,19 @@
 #include "ui/viewport/picking.h"
 #include "ui/model/scene_edits.h"
 
+#include "tests/support/render_helpers.h"
+
 #include <gtest/gtest.h>
 
 namespace inkray {
 namespace {
 
 SceneDesc two_spheres() {
-  SceneDesc s;
-  s.render.width = 200;
-  s.render.height = 100;
-  s.camera.look_from = Point3(0.f, 0.f, 10.f);
-  s.camera.look_at = Point3(0.f);
+  SceneDesc s = testing::sized_scene(200, 100);
+  s.camera = {.look_from = Point3(0.f, 0.f, 10.f), .look_at = Point3(0.f)};
   s.materials.push_back({"m", DiffuseDesc{}, {}});
-  ObjectDesc left;
-  left.name = "left";
-  left.shape = SphereDesc{Point3(-2.f, 0.f, 0.f), 1.f};
-  left.material = "m";
-  ObjectDesc right = left;
-  right.name = "right";
-  right.shape = SphereDesc{Point3(2.f, 0.f, 0.f), 1.f};
-  s.objects = {left, right};
+  s.objects = {testing::make_object("left", SphereDesc{Point3(-2.f, 0.f, 0.f), 1.f}, "m"),
+               testing::make_object("right", SphereDesc{Point3(2.f, 0.f, 0.f), 1.f}, "m")};
   return s;
 }
 

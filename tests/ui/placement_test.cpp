@@ -4,6 +4,7 @@
 #include "core/camera/camera.h"
 #include "core/compiler/compile_objects.h"
 #include "support/file_helpers.h"
+#include "support/render_helpers.h"
 #include "ui/model/document.h"
 #include "ui/model/scene_edits.h"
 
@@ -90,12 +91,8 @@ TEST(Placement, ACrowdedViewStillPlacesInView) {
 TEST(Placement, BallsAreMeasuredAsBallsNotBoxes) {
   // Three balls in a row fill the view's middle; the new one finds the gap above them
   // that their boxes would hide.
-  SceneDesc s;
-  s.render.width = 800;
-  s.render.height = 450;
-  s.camera.look_from = Point3(0.f, 2.6f, 9.f);
-  s.camera.look_at = Point3(0.f, 0.9f, 0.f);
-  s.camera.vfov = 32.f;
+  SceneDesc s = testing::sized_scene(800, 450);
+  s.camera = {.look_from = Point3(0.f, 2.6f, 9.f), .look_at = Point3(0.f, 0.9f, 0.f), .vfov = 32.f};
   for (float x : {-2.4f, 0.f, 2.4f}) {
     ObjectDesc ball;
     ball.name = "ball" + std::to_string(int(x * 10));

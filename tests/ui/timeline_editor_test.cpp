@@ -16,10 +16,7 @@
 namespace inkray {
 namespace {
 
-using testing::editor_unavailable;
-using testing::printed_numbers;
-using testing::run_editor_script;
-using testing::ScratchFolder;
+using namespace inkray::testing;
 
 constexpr const char* kScript = R"(# The ball is selected; its position is the first field of its transform.
 wait 3

@@ -14,10 +14,7 @@
 namespace inkray {
 namespace {
 
-using testing::editor_unavailable;
-using testing::printed_numbers;
-using testing::run_editor_script;
-using testing::ScratchFolder;
+using namespace inkray::testing;
 
 struct ViewportRun {
   std::string out;

@@ -16,9 +16,7 @@
 namespace inkray {
 namespace {
 
-using testing::build_test_strokes;
-using testing::surface_of;
-using testing::test_emitter;
+using namespace inkray::testing;
 
 // Each vertex's alpha (the corner alphas of the triangles using it, in
 // 1 / 255), or -1 for a vertex no triangle uses (a cut-away part).

@@ -4,6 +4,7 @@
 #include "core/compiler/compile.h"
 
 #include "stroke_fixtures.h"
+#include "tests/support/render_helpers.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +12,7 @@ namespace inkray {
 namespace {
 
 SceneDesc painted_ball(Color paint, int seed) {
-  SceneDesc d;
-  d.render.width = 32;
-  d.render.height = 32;
+  SceneDesc d = testing::sized_scene(32, 32);
   d.materials.push_back({"m", DiffuseDesc{paint}, {}});
   d.objects.push_back({"thing", SphereDesc{{0.f, 0.f, 0.f}, 1.f}, {}, "m", true, {}});
   StrokeEmitterDesc e = testing::test_emitter(400, seed);

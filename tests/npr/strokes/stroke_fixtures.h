@@ -34,17 +34,15 @@ inline StrokeSurface surface_of(const Shape& shape) {
 }
 
 inline StrokeEmitterDesc test_emitter(int count, int seed = 1) {
-  StrokeEmitterDesc e;
-  e.name = "paint";
-  e.object = "thing";
-  e.count = count;
-  e.seed = seed;
-  e.width_min = 0.04f;
-  e.width_max = 0.08f;
-  e.length_min = 0.15f;
-  e.length_max = 0.3f;
-  e.rotation_jitter = 30.f;
-  return e;
+  return {.name = "paint",
+          .object = "thing",
+          .seed = seed,
+          .count = count,
+          .width_min = 0.04f,
+          .width_max = 0.08f,
+          .length_min = 0.15f,
+          .length_max = 0.3f,
+          .rotation_jitter = 30.f};
 }
 
 // Roots placed by the emitter's seed, every stroke mid-grey, ribbons built.

@@ -14,9 +14,7 @@
 namespace inkray {
 namespace {
 
-using testing::build_test_strokes;
-using testing::surface_of;
-using testing::test_emitter;
+using namespace inkray::testing;
 
 bool same_mesh(const TriangleMesh& a, const TriangleMesh& b) {
   return a.positions == b.positions && a.normals == b.normals && a.uvs == b.uvs && a.colors == b.colors &&
