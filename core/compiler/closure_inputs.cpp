@@ -1,10 +1,11 @@
 #include "core/compiler/closure_inputs.h"
 
+#include "core/document/desc.h"
 #include "core/document/graph_sockets.h"
+#include "core/document/tagged_variant.h"
 
 #include <array>
 #include <cstddef>
-#include <span>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -17,99 +18,76 @@ struct Binding {
   ClosureSetter set = nullptr;
 };
 
-ClosureSetter find(std::span<const Binding> bindings, std::string_view socket) {
-  for (const Binding& b : bindings)
-    if (b.socket == socket) return b.set;
-  return nullptr;
+template <class D>
+constexpr auto& kRows = ParamTable<D>::rows;
+
+// Which of D's texture slots compiles the colour input `member`; past the end when none.
+template <class D, class Member>
+constexpr size_t texture_slot(Member member) {
+  constexpr auto& slots = CompiledMaterial<D>::textures;
+  for (size_t k = 0; k < slots.size(); ++k)
+    if (slots[k].input == member) return k;
+  return slots.size();
 }
 
-// The material a setter writes: the alternative its leaf's template holds.
-template <class M>
-M& as(Material& m) {
-  return std::get<M>(m);
-}
-Texture constant(const Vec3& v) { return Texture{ConstantTexture{v}}; }
-
-// A row of ToonDesc's table as a binding: rows into ToonParams that are sockets
-// (numbers and colours) set the compiled material's copy of the same member.
-template <std::size_t I>
-constexpr Binding toon_row() {
-  constexpr auto row = std::get<I>(ParamTable<ToonDesc>::rows);
-  using Row = std::decay_t<decltype(row)>;
+// Row I of D's table as a binding: a colour input sets its texture to the constant, a
+// number or colour the compiled material's copy of the block member the row names.
+// Rows that are no socket (toggles, choices, integers, ramps) bind nothing.
+template <class D, std::size_t I>
+constexpr Binding row_binding() {
+  using Row = std::decay_t<decltype(std::get<I>(kRows<D>))>;
   using T = typename Row::value_type;
-  if constexpr (std::is_same_v<typename Row::owner_type, ToonParams> &&
-                (std::is_same_v<T, float> || std::is_same_v<T, Color>)) {
-    return {row.param.name, [](Material& m, const Vec3& v) {
-              constexpr auto member = std::get<I>(ParamTable<ToonDesc>::rows).member;
-              ToonParams& params = as<ToonMaterial>(m);
-              if constexpr (std::is_same_v<T, float>) {
-                params.*member = v.x;
-              } else {
-                params.*member = v;
-              }
+  using M = typename CompiledMaterial<D>::type;
+  constexpr Param param = std::get<I>(kRows<D>).param;
+  if constexpr (!socket_type_of(param.kind)) {
+    return {};
+  } else if constexpr (std::is_same_v<T, ColorInput>) {
+    constexpr size_t slot = texture_slot<D>(std::get<I>(kRows<D>).member);
+    static_assert(slot < CompiledMaterial<D>::textures.size(), "a colour input compiles to no texture");
+    return {param.name, [](Material& m, const Vec3& v) {
+              std::get<M>(m).*(CompiledMaterial<D>::textures[slot].texture) = Texture{ConstantTexture{v}};
             }};
   } else {
-    return {};
+    using Block = typename Row::owner_type;
+    static_assert(std::is_base_of_v<Block, M>, "a valued setting lies outside the block its material shares");
+    static_assert(std::is_same_v<T, float> || std::is_same_v<T, Color>);
+    return {param.name, [](Material& m, const Vec3& v) {
+              Block& block = std::get<M>(m);
+              if constexpr (std::is_same_v<T, float>) {
+                block.*(std::get<I>(kRows<D>).member) = v.x;
+              } else {
+                block.*(std::get<I>(kRows<D>).member) = v;
+              }
+            }};
   }
 }
 
-template <std::size_t... I>
-constexpr auto toon_rows(std::index_sequence<I...>) {
-  return std::array<Binding, sizeof...(I)>{toon_row<I>()...};
+template <class D, std::size_t... I>
+constexpr auto row_bindings(std::index_sequence<I...>) {
+  return std::array<Binding, sizeof...(I)>{row_binding<D, I>()...};
 }
+template <class D>
+constexpr auto kBindings =
+    row_bindings<D>(std::make_index_sequence<std::tuple_size_v<std::decay_t<decltype(kRows<D>)>>>{});
 
-constexpr Binding kDiffuse[] = {
-    {"albedo", [](Material& m, const Vec3& v) { as<DiffuseMaterial>(m).albedo = constant(v); }},
-};
-constexpr Binding kConductor[] = {
-    {"color", [](Material& m, const Vec3& v) { as<ConductorMaterial>(m).color = constant(v); }},
-    {"roughness", [](Material& m, const Vec3& v) { as<ConductorMaterial>(m).alpha = sqr(v.x); }},
-};
-constexpr Binding kDielectric[] = {
-    {"ior", [](Material& m, const Vec3& v) { as<DielectricMaterial>(m).bsdf.eta = v.x; }},
-    {"roughness", [](Material& m, const Vec3& v) { as<DielectricMaterial>(m).bsdf.alpha = sqr(v.x); }},
-    {"tint", [](Material& m, const Vec3& v) { as<DielectricMaterial>(m).bsdf.tint = v; }},
-};
-constexpr Binding kEmissive[] = {
-    {"color", [](Material& m, const Vec3& v) { as<EmissiveMaterial>(m).color = constant(v); }},
-    {"strength", [](Material& m, const Vec3& v) { as<EmissiveMaterial>(m).strength = v.x; }},
-};
-constexpr Binding kUnlit[] = {
-    {"color", [](Material& m, const Vec3& v) { as<UnlitMaterial>(m).color = constant(v); }},
-};
-constexpr Binding kTransparent[] = {
-    {"tint", [](Material& m, const Vec3& v) { as<TransparentMaterial>(m).tint = v; }},
-};
-// The toon's lit colour is a texture in the material; its other inputs are settings.
-constexpr Binding kToonColor[] = {
-    {"color", [](Material& m, const Vec3& v) { as<ToonMaterial>(m).color = constant(v); }},
-};
-constexpr auto kToonSettings =
-    toon_rows(std::make_index_sequence<std::tuple_size_v<decltype(ParamTable<ToonDesc>::rows)>>{});
-
-struct ClosureKind {
-  std::string_view type;
-  std::span<const Binding> first, second;
-};
-constexpr ClosureKind kKinds[] = {
-    {DiffuseDesc::type_name, kDiffuse, {}},
-    {ConductorDesc::type_name, kConductor, {}},
-    {DielectricDesc::type_name, kDielectric, {}},
-    {EmissiveDesc::type_name, kEmissive, {}},
-    {UnlitDesc::type_name, kUnlit, {}},
-    {TransparentDesc::type_name, kTransparent, {}},
-    {ToonDesc::type_name, kToonColor, kToonSettings},
+// A plain material's description that is also a node of material graphs.
+template <class D>
+concept IsClosureNode = requires {
+  D::outputs;
 };
 
 }  // namespace
 
 ClosureSetter closure_input_setter(std::string_view type, std::string_view socket) {
-  for (const ClosureKind& kind : kKinds) {
-    if (kind.type != type) continue;
-    if (const ClosureSetter set = find(kind.first, socket)) return set;
-    return find(kind.second, socket);
-  }
-  return nullptr;
+  ClosureSetter found = nullptr;
+  for_each_alternative<MaterialVariant>([&]<class D>(std::type_identity<D>) {
+    if constexpr (IsClosureNode<D>) {
+      if (D::type_name != type) return;
+      for (const Binding& b : kBindings<D>)
+        if (b.set && b.socket == socket) found = b.set;
+    }
+  });
+  return found;
 }
 
 }  // namespace inkray

@@ -3,6 +3,7 @@
 // is an error rather than a loop.
 #include "core/compiler/compile_materials.h"
 
+#include "core/compiler/closure_inputs.h"
 #include "core/compiler/compile_graph.h"
 
 #include <array>
@@ -39,17 +40,26 @@ std::optional<Texture> compile_color(const ColorInput& input, ImageCache& images
   return ImageTexture{std::move(image), img.scale, average};
 }
 
-std::optional<Material> compile_toon(const ToonDesc& d, ImageCache& images, std::string* error) {
-  auto color = compile_color(d.color, images, error);
-  if (!color) return std::nullopt;
-  ToonMaterial m;
-  static_cast<ToonParams&>(m) = d;  // the settings, whole
-  m.color = std::move(*color);
-  if (!d.ramp.empty()) m.ramp = std::make_shared<const std::vector<Color>>(d.ramp);
-  if (!d.ramp_image.empty()) {
-    // A ramp holds colours, so 8-bit files are sRGB like colour textures.
-    m.ramp_image = images.get(ImageTextureDesc{d.ramp_image, Color(1.f), true}, error);
-    if (!m.ramp_image) return std::nullopt;
+// A plain material: its settings block copied whole, its colour inputs compiled to
+// textures (CompiledMaterial in closure_inputs.h). A mix's sides are set later.
+template <class D>
+std::optional<Material> compile_plain(const D& d, ImageCache& images, std::string* error) {
+  using Compiled = CompiledMaterial<D>;
+  typename Compiled::type m;
+  if constexpr (!std::is_void_v<typename Compiled::Params>)
+    static_cast<typename Compiled::Params&>(m) = d;  // the settings, whole
+  for (const auto& slot : Compiled::textures) {
+    auto texture = compile_color(d.*slot.input, images, error);
+    if (!texture) return std::nullopt;
+    m.*slot.texture = std::move(*texture);
+  }
+  if constexpr (std::is_same_v<D, ToonDesc>) {
+    if (!d.ramp.empty()) m.ramp = std::make_shared<const std::vector<Color>>(d.ramp);
+    if (!d.ramp_image.empty()) {
+      // A ramp holds colours, so 8-bit files are sRGB like colour textures.
+      m.ramp_image = images.get(ImageTextureDesc{d.ramp_image, Color(1.f), true}, error);
+      if (!m.ramp_image) return std::nullopt;
+    }
   }
   return m;
 }
@@ -57,29 +67,9 @@ std::optional<Material> compile_toon(const ToonDesc& d, ImageCache& images, std:
 // Everything but the indices of a mix; those are known once all materials are.
 std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& images, AssetCache& assets,
                                          const std::filesystem::path& base_dir, std::string* error) {
-  auto tex = [&](const ColorInput& c) { return compile_color(c, images, error); };
   return std::visit(
-      [&](const auto& m) -> std::optional<Material> {
-        using T = std::decay_t<decltype(m)>;
-        if constexpr (std::is_same_v<T, DiffuseDesc>) {
-          auto t = tex(m.albedo);
-          return t ? std::optional<Material>(DiffuseMaterial{*t}) : std::nullopt;
-        } else if constexpr (std::is_same_v<T, ConductorDesc>) {
-          auto t = tex(m.color);
-          return t ? std::optional<Material>(ConductorMaterial{*t, m.roughness * m.roughness}) : std::nullopt;
-        } else if constexpr (std::is_same_v<T, DielectricDesc>) {
-          return DielectricMaterial{DielectricBsdf{m.ior, m.roughness * m.roughness, m.tint}};
-        } else if constexpr (std::is_same_v<T, EmissiveDesc>) {
-          auto t = tex(m.color);
-          return t ? std::optional<Material>(EmissiveMaterial{*t, m.strength, m.two_sided}) : std::nullopt;
-        } else if constexpr (std::is_same_v<T, UnlitDesc>) {
-          auto t = tex(m.color);
-          return t ? std::optional<Material>(UnlitMaterial{*t}) : std::nullopt;
-        } else if constexpr (std::is_same_v<T, TransparentDesc>) {
-          return TransparentMaterial{m.tint};
-        } else if constexpr (std::is_same_v<T, ToonDesc>) {
-          return compile_toon(m, images, error);
-        } else if constexpr (std::is_same_v<T, GraphDesc>) {
+      [&]<class T>(const T& m) -> std::optional<Material> {
+        if constexpr (std::is_same_v<T, GraphDesc>) {
           std::vector<std::string> errors;
           auto program = compile_graph(m, base_dir, assets, errors);
           if (!program) {
@@ -89,9 +79,7 @@ std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& i
           }
           return GraphMaterial{std::move(program)};
         } else {
-          static_assert(std::is_same_v<T, MixDesc>);
-          auto t = tex(m.factor);
-          return t ? std::optional<Material>(MixMaterial{0, 0, *t}) : std::nullopt;
+          return compile_plain(m, images, error);
         }
       },
       desc.data);

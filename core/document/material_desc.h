@@ -5,12 +5,14 @@
 
 #include "core/document/graph_sockets.h"
 #include "core/document/params.h"
+#include "core/materials/closure_params.h"
 #include "core/materials/toon_params.h"
 #include "core/math/types.h"
 
 #include <array>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -54,6 +56,9 @@ struct ParamTable<CheckerTextureDesc> {
 using ColorInput = std::variant<Color, ImageTextureDesc, CheckerTextureDesc>;
 
 // ---------------------------------------------------------------- materials
+// A closure's settings are a block the compiled material shares (closure_params.h,
+// toon_params.h; docs/architecture.md, "Parameter tables"): the rows that point into
+// it are the whole of their declaration here. Colour inputs are the description's own.
 struct DiffuseDesc {
   static constexpr std::string_view type_name = "diffuse";
   static constexpr std::string_view doc = "A Lambertian surface.";
@@ -67,12 +72,17 @@ struct ParamTable<DiffuseDesc> {
       std::tuple{row(&DiffuseDesc::albedo, color_input("albedo", "Lambertian reflectance"))};
 };
 
-struct ConductorDesc {
+struct ConductorDesc : ConductorParams {
   static constexpr std::string_view type_name = "conductor";
   static constexpr std::string_view doc = "A metal: GGX microfacets, mirror at roughness 0.";
   static constexpr auto& outputs = kClosureOutputs;  // a closure node in graphs
   ColorInput color = Color(0.95f);                   // reflectance at normal incidence (F0)
-  float roughness = 0.f;                             // GGX, perceptual: alpha = roughness^2; 0 is a mirror
+  ConductorDesc() = default;
+  // The colour first, as a scene lists it, then the settings in the block's order:
+  // ConductorDesc{Color(0.9f), 0.3f} (as an aggregate the block, a base, would come first).
+  template <class... Settings>
+  explicit ConductorDesc(ColorInput c, Settings... settings)
+      : ConductorParams{settings...}, color(std::move(c)) {}
   bool operator==(const ConductorDesc&) const = default;
 };
 template <>
@@ -82,13 +92,10 @@ struct ParamTable<ConductorDesc> {
       row(&ConductorDesc::roughness, number("roughness", 0, 1, "GGX roughness; 0 is a perfect mirror"))};
 };
 
-struct DielectricDesc {
+struct DielectricDesc : DielectricParams {
   static constexpr std::string_view type_name = "dielectric";
   static constexpr std::string_view doc = "Glass: smooth or rough (GGX) refraction.";
   static constexpr auto& outputs = kClosureOutputs;  // a closure node in graphs
-  float ior = 1.5f;
-  float roughness = 0.f;
-  Color tint{1.f};  // multiplies transmitted light
   bool operator==(const DielectricDesc&) const = default;
 };
 template <>
@@ -100,13 +107,17 @@ struct ParamTable<DielectricDesc> {
       row(&DielectricDesc::tint, color("tint", 1, "Multiplies transmitted light"))};
 };
 
-struct EmissiveDesc {
+struct EmissiveDesc : EmissiveParams {
   static constexpr std::string_view type_name = "emissive";
   static constexpr std::string_view doc = "A surface that emits light.";
   static constexpr auto& outputs = kClosureOutputs;  // a closure node in graphs
   ColorInput color = Color(1.f);
-  float strength = 1.f;  // radiance = color * strength
-  bool two_sided = false;
+  EmissiveDesc() = default;
+  // The colour first, as a scene lists it, then the settings in the block's order:
+  // EmissiveDesc{Color(1.f), 5.f, true} (as an aggregate the block, a base, would come first).
+  template <class... Settings>
+  explicit EmissiveDesc(ColorInput c, Settings... settings)
+      : EmissiveParams{settings...}, color(std::move(c)) {}
   bool operator==(const EmissiveDesc&) const = default;
 };
 template <>
@@ -132,11 +143,10 @@ struct ParamTable<UnlitDesc> {
       row(&UnlitDesc::color, color_input("color", "Colour returned to any ray that hits; ignores light"))};
 };
 
-struct TransparentDesc {
+struct TransparentDesc : TransparentParams {
   static constexpr std::string_view type_name = "transparent";
   static constexpr std::string_view doc = "Lets light straight through, tinted.";
   static constexpr auto& outputs = kClosureOutputs;  // a closure node in graphs
-  Color tint{1.f};
   bool operator==(const TransparentDesc&) const = default;
 };
 template <>

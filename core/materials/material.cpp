@@ -78,28 +78,31 @@ SurfaceOverrides material_overrides(std::span<const Material> materials, uint32_
 
 std::optional<Bsdf> material_bsdf(const Material& material, const SurfaceInteraction& si) {
   using Result = std::optional<Bsdf>;
-  return std::visit(Overloaded{
-                        [&](const DiffuseMaterial& m) -> Result {
-                          return LambertBsdf{si.color * texture_eval(m.albedo, si.uv)};
-                        },
-                        [&](const ConductorMaterial& m) -> Result {
-                          return ConductorBsdf{si.color * texture_eval(m.color, si.uv), m.alpha};
-                        },
-                        [](const DielectricMaterial& m) -> Result { return m.bsdf; },
-                        // Paths end on an emitter: light leaves it, none bounces off it.
-                        [](const EmissiveMaterial&) -> Result { return std::nullopt; },
-                        // Shows its colour whatever the light: nothing to scatter.
-                        [](const UnlitMaterial&) -> Result { return std::nullopt; },
-                        [](const TransparentMaterial& m) -> Result { return TransparentBsdf{m.tint}; },
-                        // Light bouncing off a toon surface sees a Lambertian of its lit colour.
-                        [&](const ToonMaterial& m) -> Result {
-                          return LambertBsdf{si.color * texture_eval(m.color, si.uv)};
-                        },
-                        // A mix or graph scatters as the surface resolve_material picks.
-                        [](const MixMaterial&) -> Result { return std::nullopt; },
-                        [](const GraphMaterial&) -> Result { return std::nullopt; },
-                    },
-                    material);
+  return std::visit(
+      Overloaded{
+          [&](const DiffuseMaterial& m) -> Result {
+            return LambertBsdf{si.color * texture_eval(m.albedo, si.uv)};
+          },
+          [&](const ConductorMaterial& m) -> Result {
+            return ConductorBsdf{si.color * texture_eval(m.color, si.uv), ggx_alpha(m.roughness)};
+          },
+          [](const DielectricMaterial& m) -> Result {
+            return DielectricBsdf{m.ior, ggx_alpha(m.roughness), m.tint};
+          },
+          // Paths end on an emitter: light leaves it, none bounces off it.
+          [](const EmissiveMaterial&) -> Result { return std::nullopt; },
+          // Shows its colour whatever the light: nothing to scatter.
+          [](const UnlitMaterial&) -> Result { return std::nullopt; },
+          [](const TransparentMaterial& m) -> Result { return TransparentBsdf{m.tint}; },
+          // Light bouncing off a toon surface sees a Lambertian of its lit colour.
+          [&](const ToonMaterial& m) -> Result {
+            return LambertBsdf{si.color * texture_eval(m.color, si.uv)};
+          },
+          // A mix or graph scatters as the surface resolve_material picks.
+          [](const MixMaterial&) -> Result { return std::nullopt; },
+          [](const GraphMaterial&) -> Result { return std::nullopt; },
+      },
+      material);
 }
 
 Color material_emission(const Material& material, const SurfaceInteraction& si, float cos_ng) {
@@ -124,7 +127,7 @@ Color material_albedo(const Material& material, const SurfaceInteraction& si) {
       Overloaded{
           [&](const DiffuseMaterial& m) -> Color { return si.color * texture_eval(m.albedo, uv); },
           [&](const ConductorMaterial& m) -> Color { return si.color * texture_eval(m.color, uv); },
-          [](const DielectricMaterial& m) -> Color { return m.bsdf.tint; },
+          [](const DielectricMaterial& m) -> Color { return m.tint; },
           [&](const EmissiveMaterial& m) -> Color { return texture_eval(m.color, uv); },
           [&](const UnlitMaterial& m) -> Color { return texture_eval(m.color, uv); },
           [](const TransparentMaterial& m) -> Color { return m.tint; },

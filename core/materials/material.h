@@ -5,6 +5,7 @@
 
 #include "core/geometry/ray.h"
 #include "core/materials/bsdf.h"
+#include "core/materials/closure_params.h"
 #include "core/materials/shader_program.h"
 #include "core/materials/shading_point.h"
 #include "core/materials/texture.h"
@@ -19,27 +20,22 @@
 
 namespace inkray {
 
+// A closure's settings are the document's block (closure_params.h, toon_params.h),
+// copied whole; its colour inputs are compiled to textures.
 struct DiffuseMaterial {
   Texture albedo;
 };
-struct ConductorMaterial {
-  Texture color;
-  float alpha = 0.f;
+struct ConductorMaterial : ConductorParams {
+  Texture color;  // reflectance at normal incidence (F0)
 };
-struct DielectricMaterial {
-  DielectricBsdf bsdf;
-};
-struct EmissiveMaterial {
+struct DielectricMaterial : DielectricParams {};
+struct EmissiveMaterial : EmissiveParams {
   Texture color;
-  float strength = 1.f;
-  bool two_sided = false;
 };
 struct UnlitMaterial {
   Texture color;
 };
-struct TransparentMaterial {
-  Color tint{1.f};
-};
+struct TransparentMaterial : TransparentParams {};
 // Picks material a or b per sample with probability luminance(factor) of b, so
 // the mix costs no more than either side and needs no BSDF of its own.
 struct MixMaterial {

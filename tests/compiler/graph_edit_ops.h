@@ -302,9 +302,9 @@ inline std::vector<float> material_numbers(const Material& m) {
         if constexpr (std::is_same_v<T, DiffuseMaterial>) {
           texture_numbers(s.albedo, out);
         } else if constexpr (std::is_same_v<T, ConductorMaterial>) {
-          texture_numbers(s.color, out), out.push_back(s.alpha);
+          texture_numbers(s.color, out), out.push_back(s.roughness);
         } else if constexpr (std::is_same_v<T, DielectricMaterial>) {
-          out.insert(out.end(), {s.bsdf.eta, s.bsdf.alpha}), push(s.bsdf.tint);
+          out.insert(out.end(), {s.ior, s.roughness}), push(s.tint);
         } else if constexpr (std::is_same_v<T, EmissiveMaterial>) {
           texture_numbers(s.color, out), out.push_back(s.strength);
         } else if constexpr (std::is_same_v<T, UnlitMaterial>) {

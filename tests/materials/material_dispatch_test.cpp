@@ -26,7 +26,9 @@ struct Example<DiffuseMaterial> {
 };
 template <>
 struct Example<ConductorMaterial> {
-  static Material make() { return ConductorMaterial{ConstantTexture{Color(0.9f, 0.6f, 0.3f)}, 0.25f}; }
+  static Material make() {
+    return ConductorMaterial{{0.5f}, ConstantTexture{Color(0.9f, 0.6f, 0.3f)}};
+  }  // alpha 0.25
   static Color albedo(const SurfaceInteraction& si) { return si.color * Color(0.9f, 0.6f, 0.3f); }
   static std::optional<Bsdf> bsdf(const SurfaceInteraction& si) {
     return ConductorBsdf{si.color * Color(0.9f, 0.6f, 0.3f), 0.25f};
@@ -34,16 +36,16 @@ struct Example<ConductorMaterial> {
 };
 template <>
 struct Example<DielectricMaterial> {
-  static Material make() { return DielectricMaterial{DielectricBsdf{1.33f, 0.1f, Color(0.8f, 0.9f, 1.f)}}; }
+  static Material make() { return DielectricMaterial{{1.33f, 0.5f, Color(0.8f, 0.9f, 1.f)}}; }  // alpha 0.25
   // Glass is not tinted by vertex colour.
   static Color albedo(const SurfaceInteraction&) { return Color(0.8f, 0.9f, 1.f); }
   static std::optional<Bsdf> bsdf(const SurfaceInteraction&) {
-    return DielectricBsdf{1.33f, 0.1f, Color(0.8f, 0.9f, 1.f)};
+    return DielectricBsdf{1.33f, 0.25f, Color(0.8f, 0.9f, 1.f)};
   }
 };
 template <>
 struct Example<EmissiveMaterial> {
-  static Material make() { return EmissiveMaterial{ConstantTexture{Color(1.f, 0.5f, 0.25f)}, 4.f, false}; }
+  static Material make() { return EmissiveMaterial{{4.f, false}, ConstantTexture{Color(1.f, 0.5f, 0.25f)}}; }
   static Color albedo(const SurfaceInteraction&) { return Color(1.f, 0.5f, 0.25f); }
   static std::optional<Bsdf> bsdf(const SurfaceInteraction&) { return std::nullopt; }
   static Color emission(const SurfaceInteraction& si) { return 4.f * si.color * Color(1.f, 0.5f, 0.25f); }
@@ -56,7 +58,7 @@ struct Example<UnlitMaterial> {
 };
 template <>
 struct Example<TransparentMaterial> {
-  static Material make() { return TransparentMaterial{Color(0.7f, 0.8f, 0.9f)}; }
+  static Material make() { return TransparentMaterial{{Color(0.7f, 0.8f, 0.9f)}}; }
   static Color albedo(const SurfaceInteraction&) { return Color(0.7f, 0.8f, 0.9f); }
   static std::optional<Bsdf> bsdf(const SurfaceInteraction&) {
     return TransparentBsdf{Color(0.7f, 0.8f, 0.9f)};
@@ -175,21 +177,21 @@ TEST(MaterialDispatch, EveryAlternativeKeepsItsPromises) {
 // A two-sided emitter shows from behind; a black or unlit one is no light.
 TEST(MaterialDispatch, EmissionSidesAndStrength) {
   const SurfaceInteraction si;
-  const Material two_sided = EmissiveMaterial{ConstantTexture{Color(1.f)}, 2.f, true};
+  const Material two_sided = EmissiveMaterial{{2.f, true}, ConstantTexture{Color(1.f)}};
   EXPECT_TRUE(near(material_emission(two_sided, si, -0.5f), Color(2.f)));
   EXPECT_TRUE(near(material_average_emission(two_sided), Color(2.f)));
-  EXPECT_FALSE(material_is_emissive(EmissiveMaterial{ConstantTexture{Color(1.f)}, 0.f, false}));
-  EXPECT_FALSE(material_is_emissive(EmissiveMaterial{ConstantTexture{Color(0.f)}, 5.f, false}));
+  EXPECT_FALSE(material_is_emissive(EmissiveMaterial{{0.f, false}, ConstantTexture{Color(1.f)}}));
+  EXPECT_FALSE(material_is_emissive(EmissiveMaterial{{5.f, false}, ConstantTexture{Color(0.f)}}));
 }
 
 // resolve_material reaches a kind that is not a mix through nested mixes, by the factor's luminance.
 TEST(MaterialDispatch, ResolveReachesAKindThatIsNotAMix) {
   const std::vector<Material> materials = {
-      DiffuseMaterial{ConstantTexture{Color(0.5f)}},              // 0
-      EmissiveMaterial{ConstantTexture{Color(1.f)}, 1.f, false},  // 1
-      MixMaterial{0, 1, ConstantTexture{Color(0.25f)}},           // 2: b a quarter of the time
-      MixMaterial{2, 0, ConstantTexture{Color(1.f)}},             // 3: always b
-      MixMaterial{2, 0, ConstantTexture{Color(0.f)}},             // 4: always a, the mix 2
+      DiffuseMaterial{ConstantTexture{Color(0.5f)}},                // 0
+      EmissiveMaterial{{1.f, false}, ConstantTexture{Color(1.f)}},  // 1
+      MixMaterial{0, 1, ConstantTexture{Color(0.25f)}},             // 2: b a quarter of the time
+      MixMaterial{2, 0, ConstantTexture{Color(1.f)}},               // 3: always b
+      MixMaterial{2, 0, ConstantTexture{Color(0.f)}},               // 4: always a, the mix 2
   };
   const SurfaceInteraction si;
   const ShadingPoint sp = shading_point(si, Vec3(0.f, 0.f, 1.f));

@@ -27,14 +27,15 @@ std::optional<Continuation> continue_through(const Material& material, const Sur
                         // Diffuse surfaces, emitters and flat colours are what is seen.
                         [](const DiffuseMaterial&) -> Next { return std::nullopt; },
                         [&](const ConductorMaterial& c) -> Next {
-                          return Continuation{reflect(wo, si.ns), 2.f * c.alpha};
+                          return Continuation{reflect(wo, si.ns), 2.f * ggx_alpha(c.roughness)};
                         },
                         [&](const DielectricMaterial& d) -> Next {
                           // Glass shows mostly what is behind it: follow the refraction,
                           // and the reflection only where there is none.
-                          if (const auto r = refract(wo, si.ns, d.bsdf.eta))
-                            return Continuation{r->wt, std::abs(1.f - 1.f / d.bsdf.eta) * d.bsdf.alpha};
-                          return Continuation{reflect(wo, si.ns), 2.f * d.bsdf.alpha};
+                          const float alpha = ggx_alpha(d.roughness);
+                          if (const auto r = refract(wo, si.ns, d.ior))
+                            return Continuation{r->wt, std::abs(1.f - 1.f / d.ior) * alpha};
+                          return Continuation{reflect(wo, si.ns), 2.f * alpha};
                         },
                         [](const EmissiveMaterial&) -> Next { return std::nullopt; },
                         [](const UnlitMaterial&) -> Next { return std::nullopt; },
