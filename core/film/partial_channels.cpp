@@ -12,6 +12,8 @@ std::vector<PartialChannel> partial_channels(const PartialInfo& info) {
   std::vector<PartialChannel> c;
   const char* rgb[3] = {"R", "G", "B"};
   const char* xyz[3] = {"X", "Y", "Z"};
+  // A score of names, once per file: not worth counting them first to reserve.
+  // NOLINTNEXTLINE(performance-inefficient-vector-operation)
   for (int k = 0; k < 3; ++k) c.push_back({rgb[k], PartialField::preview, k, PartialStored::f32});
   for (int k = 0; k < 3; ++k)
     c.push_back({std::string("radiance.even.") + rgb[k], PartialField::sum_even, k, PartialStored::f64});

@@ -78,7 +78,7 @@ std::string check_index(std::string_view token, long long count, std::string_vie
 
 // One corner of a face: "3", "3/1", "3//2" or "3/1/2".
 std::string check_face_vertex(std::string_view token, const Counts& c) {
-  const std::string bad = "expected a face vertex like 3, 3/1, 3//2 or 3/1/2, got " + shown(token);
+  std::string bad = "expected a face vertex like 3, 3/1, 3//2 or 3/1/2, got " + shown(token);
   const std::size_t slash1 = token.find('/');
   std::string problem = check_index(token.substr(0, slash1), c.positions, "position");
   if (slash1 == std::string_view::npos || !problem.empty()) return problem;

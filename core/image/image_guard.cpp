@@ -133,6 +133,8 @@ bool image_safe_to_decode(const std::filesystem::path& file, std::string* error)
   std::ifstream in(file, std::ios::binary);
   const Bytes b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::string problem;
+  // PNG and BMP pass here, TGA below: it has no signature, so it is tried last.
+  // NOLINTNEXTLINE(bugprone-branch-clone)
   if (starts_with(b, "\x89PNG\r\n\x1a\n") || starts_with(b, "BM")) {
     return true;
   } else if (starts_with(b, "\xff\xd8")) {
