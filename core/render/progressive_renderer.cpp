@@ -198,7 +198,7 @@ CompileOutcome ProgressiveRenderer::compile() {
   CompileOptions options;
   options.cancel = Cancel(&superseded_);
   options.stand_in_for_broken_graphs = true;   // one bad graph must not blank the viewport
-  options.stand_in_for_missing_assets = true;  // nor a file that moved: it is drawn as a placeholder
+  options.stand_in_for_missing_assets = true;  // nor a file that moved: a stand-in draws it
   CompileResult compiled = session_.pool().run([&] { return compiler_.compile(*taken_.document, options); });
   taken_.document.reset();
   std::lock_guard lock(mutex_);
