@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
   desc.render.height = o.height;
   desc.render.shutter_open = desc.render.shutter_close = 0.f;  // a sharp picture per frame
   if (!o.keep_objects_moving)
-    std::erase_if(desc.animation, [](const TrackDesc& t) { return t.target.rfind("camera/", 0) != 0; });
+    desc.animation.erase_if([](const TrackDesc& t) { return t.target.rfind("camera/", 0) != 0; });
   if (!find_track(desc, "camera/look_from")) {
     // A quarter turn about look_at, keyed every 6 frames.
     const Vec3 arm = desc.camera.look_from - desc.camera.look_at;

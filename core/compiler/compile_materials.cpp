@@ -89,7 +89,7 @@ std::optional<Material> compile_material(const MaterialDesc& desc, ImageCache& i
 // (Kahn's algorithm, no recursion): a mix whose sides are missing or failed
 // fails, and mixes left over are on, or behind, a cycle.
 template <class Fail>
-void resolve_mixes(const std::vector<MaterialDesc>& list, std::vector<std::optional<Material>>& compiled,
+void resolve_mixes(const SharedList<MaterialDesc>& list, std::vector<std::optional<Material>>& compiled,
                    Fail&& fail) {
   std::map<std::string, size_t> by_name;
   for (size_t i = 0; i < list.size(); ++i)
@@ -179,7 +179,7 @@ std::optional<Material> compile_closure_template(const MaterialVariant& data,
 size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
                          AssetCache& assets, std::vector<std::vector<std::string>>& keys,
                          const LastMaterials& last, std::vector<std::string>* broken_graphs) {
-  const std::vector<MaterialDesc>& list = desc.materials;
+  const SharedList<MaterialDesc>& list = desc.materials;
   ImageCache images(desc.base_dir, assets);
   std::vector<std::optional<Material>> compiled(list.size());
   auto fail = [&](size_t i, const std::string& error) {

@@ -13,7 +13,7 @@ namespace inkray {
 // The table the last successful compile made from `desc` (every material compiled,
 // in document order): entries whose description is unchanged are taken from it.
 struct LastMaterials {
-  const std::vector<MaterialDesc>* desc = nullptr;
+  const SharedList<MaterialDesc>* desc = nullptr;
   const std::vector<Material>* table = nullptr;
   const std::vector<std::vector<std::string>>* keys = nullptr;  // the cache entries each was built from
 };

@@ -24,7 +24,7 @@ struct AnimationNames {
     fill(strokes, desc.strokes);
   }
   template <class Item>
-  static void fill(Map& map, const std::vector<Item>& items) {
+  static void fill(Map& map, const SharedList<Item>& items) {
     map.reserve(items.size());
     for (size_t i = 0; i < items.size(); ++i) map.emplace(items[i].name, i);
   }

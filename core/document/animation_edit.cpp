@@ -40,7 +40,7 @@ size_t rename_tracks(SceneDesc& desc, std::string_view from, std::string_view to
 }
 
 size_t delete_tracks(SceneDesc& desc, std::string_view prefix) {
-  return std::erase_if(desc.animation, [&](const TrackDesc& t) { return starts_with(t.target, prefix); });
+  return desc.animation.erase_if([&](const TrackDesc& t) { return starts_with(t.target, prefix); });
 }
 
 size_t copy_tracks(SceneDesc& desc, std::string_view from, std::string_view to) {
@@ -58,9 +58,8 @@ size_t copy_tracks(SceneDesc& desc, std::string_view from, std::string_view to) 
 
 size_t drop_vanished_tracks(const SceneDesc& before, SceneDesc& after) {
   const TargetResolver now(after), was(before);
-  return std::erase_if(after.animation, [&](const TrackDesc& t) {
-    return !now.target(t.target, nullptr) && was.target(t.target, nullptr);
-  });
+  return after.animation.erase_if(
+      [&](const TrackDesc& t) { return !now.target(t.target, nullptr) && was.target(t.target, nullptr); });
 }
 
 size_t key_edited(const SceneDesc& before, SceneDesc& after) {
@@ -107,7 +106,7 @@ bool unkey(SceneDesc& desc, std::string_view path, double frame) {
 bool clear_keys(SceneDesc& desc, std::string_view path) {
   std::vector<double> value;
   const bool shown = read_shown(desc, path, &value);
-  if (std::erase_if(desc.animation, [&](const TrackDesc& t) { return t.target == path; }) == 0) return false;
+  if (desc.animation.erase_if([&](const TrackDesc& t) { return t.target == path; }) == 0) return false;
   if (shown) write_target(desc, path, value);
   return true;
 }

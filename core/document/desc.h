@@ -5,6 +5,7 @@
 // Closed sets are std::variants whose alternatives carry their JSON "type" tag.
 #pragma once
 
+#include "core/base/shared_list.h"
 #include "core/math/types.h"
 #include "core/document/animation_desc.h"
 #include "core/document/graph_desc.h"
@@ -380,13 +381,13 @@ struct ParamTable<RenderSettings> {
 struct SceneDesc {
   CameraDesc camera;
   RenderSettings render;
-  std::vector<MaterialDesc> materials;
-  std::vector<ObjectDesc> objects;
-  std::vector<LightDesc> lights;
+  SharedList<MaterialDesc> materials;
+  SharedList<ObjectDesc> objects;
+  SharedList<LightDesc> lights;
   EnvironmentDesc environment = ConstantEnvironmentDesc{};
   OutlineDesc outlines;
-  std::vector<StrokeEmitterDesc> strokes;
-  std::vector<TrackDesc> animation;  // keyframed parameters (document/animation.h)
+  SharedList<StrokeEmitterDesc> strokes;
+  SharedList<TrackDesc> animation;  // keyframed parameters (document/animation.h)
   // Directory that relative asset paths resolve against (the scene file's folder).
   std::filesystem::path base_dir;
   bool operator==(const SceneDesc&) const = default;

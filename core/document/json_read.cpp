@@ -456,7 +456,7 @@ void read_object(ErrorLog& log, const Json& j, ObjectDesc& o, const std::string&
 
 // False when cancelled.
 template <class Item, class ReadItem>
-bool read_list(ErrorLog& log, const Json& doc, std::string_view key, std::vector<Item>& items,
+bool read_list(ErrorLog& log, const Json& doc, std::string_view key, SharedList<Item>& items,
                ReadItem read_item, const Cancel& cancel) {
   const auto it = doc.find(std::string(key));
   if (it == doc.end()) return true;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -34,7 +35,9 @@ struct AssetCollector {
   template <class T>
   void operator()(const Param& p, const T& field) {
     if constexpr (std::is_same_v<T, std::string>) {
-      if (p.kind == ParamKind::path) out.push_back({child_path(at, p.name), field, kind, p.required});
+      // An optional file left unset (a toon's ramp image) is no asset: nothing reads it.
+      if (p.kind == ParamKind::path && (p.required || !field.empty()))
+        out.push_back({child_path(at, p.name), field, kind, p.required});
     } else if constexpr (std::is_same_v<T, ColorInput>) {
       collect_tagged(child_path(at, p.name), field, out);
     } else if constexpr (std::is_same_v<T, std::vector<GraphNodeDesc>>) {
@@ -122,7 +125,7 @@ void check_assets(const SceneDesc& scene, const fs::path& base_dir, const CheckS
 }
 
 template <class Item>
-void check_unique_names(const std::vector<Item>& items, std::string_view section, std::string_view noun,
+void check_unique_names(const SharedList<Item>& items, std::string_view section, std::string_view noun,
                         ErrorLog& log) {
   std::unordered_map<std::string_view, std::size_t> first_use;
   for (std::size_t i = 0; i < items.size(); ++i) {
@@ -138,7 +141,7 @@ void check_unique_names(const std::vector<Item>& items, std::string_view section
 
 // " (defined: a, b, ...)": the names a reference could have meant.
 template <class Item>
-std::string defined_names(const std::vector<Item>& items, std::string_view noun) {
+std::string defined_names(const SharedList<Item>& items, std::string_view noun) {
   std::unordered_set<std::string_view> names;
   std::string listed;
   for (const Item& item : items) {
@@ -150,31 +153,32 @@ std::string defined_names(const std::vector<Item>& items, std::string_view noun)
 }
 
 template <class Item>
-std::unordered_set<std::string_view> name_set(const std::vector<Item>& items) {
+std::unordered_set<std::string_view> name_set(const SharedList<Item>& items) {
   std::unordered_set<std::string_view> names;
   for (const Item& item : items) names.insert(item.name);
   return names;
 }
 
 void check_material_references(const SceneDesc& scene, const CheckScope* scope, ErrorLog& log) {
-  const std::string known = defined_names(scene.materials, "materials");
-  const auto names = name_set(scene.materials);
+  // The names only once a reference is checked: an edit of the camera or a light pays
+  // nothing for them.
+  std::optional<std::unordered_set<std::string_view>> names;
+  const auto check = [&](const std::string& name, const auto& at) {
+    if (name.empty()) return;
+    if (!names) names = name_set(scene.materials);
+    if (!names->contains(name))
+      log.add_unrenderable(
+          at(), "no material named " + in_quotes(name) + defined_names(scene.materials, "materials"));
+  };
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     if (!in_scope(scope ? &scope->objects : nullptr, i)) continue;
-    const std::string& name = scene.objects[i].material;
-    if (!name.empty() && !names.contains(name)) {
-      log.add_unrenderable(element_path("objects", i) + ".material",
-                           "no material named " + in_quotes(name) + known);
-    }
+    check(scene.objects[i].material, [&] { return element_path("objects", i) + ".material"; });
   }
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const auto* mix = std::get_if<MixDesc>(&scene.materials[i].data);
     if (!mix || !in_scope(scope ? &scope->materials : nullptr, i)) continue;
-    for (const auto& [key, name] : {std::pair{".a", &mix->a}, std::pair{".b", &mix->b}}) {
-      if (!name->empty() && !names.contains(*name))
-        log.add_unrenderable(element_path("materials", i) + key,
-                             "no material named " + in_quotes(*name) + known);
-    }
+    check(mix->a, [&] { return element_path("materials", i) + ".a"; });
+    check(mix->b, [&] { return element_path("materials", i) + ".b"; });
   }
 }
 
@@ -200,7 +204,14 @@ std::vector<std::array<int, 2>> mix_graph(const SceneDesc& scene) {
 // Each cycle is reported once, at the reference that closes it, with the chain
 // of names; depth-first search with an explicit stack, as a file may chain
 // thousands of mixes.
-void check_mix_cycles(const SceneDesc& scene, ErrorLog& log) {
+void check_mix_cycles(const SceneDesc& scene, const CheckScope* scope, ErrorLog& log) {
+  // Within a scope (names unchanged) only a changed mix can close a cycle.
+  if (scope) {
+    bool mix_changed = false;
+    for (std::size_t i = 0; i < scene.materials.size() && !mix_changed; ++i)
+      mix_changed = scope->materials[i] && std::holds_alternative<MixDesc>(scene.materials[i].data);
+    if (!mix_changed) return;
+  }
   const std::vector<std::array<int, 2>> sides = mix_graph(scene);
   enum : char { unseen, open, closed };
   std::vector<char> state(sides.size(), unseen);
@@ -292,7 +303,7 @@ void check_strokes(const SceneDesc& scene, const CheckScope* scope, ErrorLog& lo
 }
 
 template <class Item>
-void name_items(std::vector<Item>& items, std::string_view prefix) {
+void name_items(SharedList<Item>& items, std::string_view prefix) {
   std::unordered_set<std::string> taken;
   for (const Item& item : items) taken.insert(item.name);
   for (std::size_t i = 0; i < items.size(); ++i) {
@@ -341,15 +352,18 @@ bool CheckScope::empty() const {
 namespace {
 
 template <class Item>
-bool same_names(const std::vector<Item>& a, const std::vector<Item>& b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
-                                            [](const Item& x, const Item& y) { return x.name == y.name; });
+bool same_names(const SharedList<Item>& a, const SharedList<Item>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!a.shares(b, i) && a[i].name != b[i].name) return false;
+  return true;
 }
 
 template <class Item>
-std::vector<bool> changed(const std::vector<Item>& before, const std::vector<Item>& after) {
+std::vector<bool> changed(const SharedList<Item>& before, const SharedList<Item>& after) {
   std::vector<bool> out(after.size());
-  for (std::size_t i = 0; i < after.size(); ++i) out[i] = !(before[i] == after[i]);
+  for (std::size_t i = 0; i < after.size(); ++i)
+    out[i] = !after.shares(before, i) && !(before[i] == after[i]);
   return out;
 }
 
@@ -381,7 +395,7 @@ void check_scene(const SceneDesc& scene, const fs::path& base_dir, ErrorLog& log
     check_unique_names(scene.strokes, "strokes", "stroke emitter", log);
   }
   check_material_references(scene, scope, log);
-  check_mix_cycles(scene, log);
+  check_mix_cycles(scene, scope, log);
   check_strokes(scene, scope, log);
   check_assets(scene, base_dir, scope, log);
   check_degenerate_directions(scene, scope, log);

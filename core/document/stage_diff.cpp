@@ -3,13 +3,15 @@
 namespace inkray {
 namespace {
 
-// Lists compare item by item; a list that grew or shrank is its section's stage.
+// Lists compare item by item, but for the items a copy still shares; a list that grew
+// or shrank is its section's stage.
 template <class T, class Compare>
-void diff_list(const std::vector<T>& before, const std::vector<T>& after, Stage section, StageSet& out,
+void diff_list(const SharedList<T>& before, const SharedList<T>& after, Stage section, StageSet& out,
                Compare compare) {
   if (before.size() != after.size()) out.add(section);
   const size_t n = std::min(before.size(), after.size());
-  for (size_t i = 0; i < n; ++i) out.add(compare(before[i], after[i]));
+  for (size_t i = 0; i < n; ++i)
+    if (!after.shares(before, i)) out.add(compare(before[i], after[i]));
 }
 
 StageSet material_changes(const MaterialDesc& before, const MaterialDesc& after) {

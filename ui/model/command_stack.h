@@ -1,6 +1,7 @@
 // Undo/redo over the scene document. Each step keeps the whole SceneDesc
-// before and after it: documents are small (meshes and strokes live outside
-// them), and whole snapshots make every edit undoable with one mechanism.
+// before and after it: snapshots share every item the step did not change
+// (core/base/shared_list.h), meshes and strokes live outside the document, and
+// whole snapshots make every edit undoable with one mechanism.
 #pragma once
 
 #include "core/document/desc.h"

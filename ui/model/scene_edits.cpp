@@ -17,7 +17,7 @@ namespace {
 constexpr std::string_view kDefaultMaterial = "default";
 
 template <class T>
-bool name_taken(const std::vector<T>& items, std::string_view name) {
+bool name_taken(const SharedList<T>& items, std::string_view name) {
   return std::any_of(items.begin(), items.end(), [&](const T& item) { return item.name == name; });
 }
 
@@ -71,7 +71,7 @@ std::string_view section_of(ItemKind kind) {
 }
 
 template <class T>
-Selection duplicate_in(SceneDesc& scene, std::vector<T>& items, ItemKind kind, int index) {
+Selection duplicate_in(SceneDesc& scene, SharedList<T>& items, ItemKind kind, int index) {
   T copy = items[size_t(index)];
   copy.name = unique_name(scene, kind, copy.name);
   const std::string_view section = section_of(kind);
@@ -203,7 +203,7 @@ bool delete_item(SceneDesc& scene, const Selection& item) {
       scene.objects.erase(scene.objects.begin() + item.index);
       for (const StrokeEmitterDesc& e : scene.strokes)
         if (e.object == name) delete_tracks(scene, entry_path("strokes", e.name));
-      std::erase_if(scene.strokes, [&](const StrokeEmitterDesc& e) { return e.object == name; });
+      scene.strokes.erase_if([&](const StrokeEmitterDesc& e) { return e.object == name; });
       break;
     }
     case ItemKind::light:

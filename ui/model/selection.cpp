@@ -4,7 +4,7 @@ namespace inkray {
 namespace {
 
 template <class T>
-bool in_range(const std::vector<T>& items, int index) {
+bool in_range(const SharedList<T>& items, int index) {
   return index >= 0 && index < int(items.size());
 }
 

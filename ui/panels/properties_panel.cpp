@@ -128,7 +128,7 @@ void commit(EditorState& state, const Selection& item, SceneDesc after, const st
 // The document with an edited copy of a named item. A changed name is applied with
 // rename_item so references to it follow; an empty or taken name keeps the old one.
 template <class T>
-std::optional<SceneDesc> with_named(EditorState& state, const Selection& sel, std::vector<T> SceneDesc::*list,
+std::optional<SceneDesc> with_named(EditorState& state, const Selection& sel, SharedList<T> SceneDesc::*list,
                                     T edited, const std::string& param) {
   SceneDesc scene = state.document.scene();
   const std::string old_name = (scene.*list)[size_t(sel.index)].name;
@@ -150,7 +150,7 @@ std::optional<SceneDesc> with_named(EditorState& state, const Selection& sel, st
 }
 
 template <class T>
-void commit_named(EditorState& state, const Selection& sel, std::vector<T> SceneDesc::*list, T edited,
+void commit_named(EditorState& state, const Selection& sel, SharedList<T> SceneDesc::*list, T edited,
                   const std::string& param, bool typed) {
   if (auto scene = with_named(state, sel, list, std::move(edited), param))
     commit(state, sel, std::move(*scene), param, typed);

@@ -66,7 +66,7 @@ void item_row(EditorState& state, const Selection& item, const std::string& name
 }
 
 template <class T>
-void item_list(EditorState& state, const char* title, ItemKind kind, const std::vector<T>& items) {
+void item_list(EditorState& state, const char* title, ItemKind kind, const SharedList<T>& items) {
   if (!ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::Indent(8.f);
   for (int i = 0; i < int(items.size()); ++i) {
