@@ -1,13 +1,10 @@
 #include "core/film/partial_channels.h"
 
-#include <tinyexr.h>
-
 #include <algorithm>
 #include <cstring>
 
 namespace inkray {
 
-static_assert(kExrUint == TINYEXR_PIXELTYPE_UINT && kExrFloat == TINYEXR_PIXELTYPE_FLOAT);
 std::vector<PartialChannel> partial_channels(const PartialInfo& info) {
   std::vector<PartialChannel> c;
   const char* rgb[3] = {"R", "G", "B"};
