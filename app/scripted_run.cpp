@@ -47,12 +47,20 @@ bool write_text(const std::string& file, const std::string& text) {
   return false;
 }
 
-// The index of the entry named `name`, or -1.
+// Selects the entry of `items` named `name`, the value of `option` (empty: not given,
+// nothing to select); false, having said so, when there is no such `what`.
 template <class Items>
-int index_of(const Items& items, const std::string& name) {
+bool select_named(EditorState& state, const Items& items, ItemKind kind, const std::string& name,
+                  const char* option, const char* what) {
+  if (name.empty()) return true;
   const auto found =
       std::find_if(items.begin(), items.end(), [&](const auto& item) { return item.name == name; });
-  return found == items.end() ? -1 : int(found - items.begin());
+  if (found == items.end()) {
+    std::fprintf(stderr, "inkray: %s: no %s named \"%s\"\n", option, what, name.c_str());
+    return false;
+  }
+  state.selection = {kind, int(found - items.begin())};
+  return true;
 }
 
 }  // namespace
@@ -66,25 +74,14 @@ ScriptedRun::~ScriptedRun() = default;
 bool ScriptedRun::start(EditorApp& app) {
   started_ = now_seconds();
   EditorState& state = app.state();
-  if (!opt_.select.empty()) {
-    const int i = index_of(state.document.scene().objects, opt_.select);
-    if (i < 0) {
-      std::fprintf(stderr, "inkray: --select: no object named \"%s\"\n", opt_.select.c_str());
-      exit_code_ = 1;
-      return false;
-    }
-    state.selection = {ItemKind::object, i};
+  const SceneDesc& scene = state.document.scene();
+  if (!select_named(state, scene.objects, ItemKind::object, opt_.select, "--select", "object") ||
+      !select_named(state, scene.materials, ItemKind::material, opt_.node_material, "--node-editor",
+                    "material")) {
+    exit_code_ = 1;
+    return false;
   }
-  if (!opt_.node_material.empty()) {
-    const int i = index_of(state.document.scene().materials, opt_.node_material);
-    if (i < 0) {
-      std::fprintf(stderr, "inkray: --node-editor: no material named \"%s\"\n", opt_.node_material.c_str());
-      exit_code_ = 1;
-      return false;
-    }
-    state.selection = {ItemKind::material, i};
-    app.show_node_editor(true);
-  }
+  if (!opt_.node_material.empty()) app.show_node_editor(true);
   if (opt_.measure_edits > 0) {
     std::vector<measure::EditKind> kinds;
     for (measure::EditKind kind : opt_.edit_kinds.empty()

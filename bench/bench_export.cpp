@@ -7,6 +7,7 @@
 // parallel efficiency, which free cores turn into a speed-up of threads x efficiency.
 #include "core/document/json_io.h"
 #include "core/render/export_job.h"
+#include "bench/bench_stats.h"
 
 #include <algorithm>
 #include <chrono>
@@ -25,10 +26,7 @@ namespace {
 using namespace inkray;
 namespace fs = std::filesystem;
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+using bench::median;
 
 struct Timing {
   double total = 0.0, passes = 0.0, cpu = 0.0;

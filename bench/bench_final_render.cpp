@@ -4,6 +4,8 @@
 // each and the overhead; then renders an animation's frames
 // and prints frames per hour. Runs the inkray-render and inkray-merge built next
 // to it, as a render farm would.
+#include "bench/bench_stats.h"
+
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,6 +20,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 extern char** environ;
@@ -72,10 +76,7 @@ std::string bytes_of(const fs::path& file) {
   return s.str();
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+using inkray::bench::median;
 
 }  // namespace
 
@@ -83,25 +84,15 @@ int main(int argc, char** argv) {
   std::string scene = "scenes/cornell_outlines.json", frame_scene;
   int width = 600, height = 600, spp = 256, slices = 4, threads = 2, runs = 1;
   int frames = 4, frame_spp = 16, frame_width = 960, frame_height = 540;
+  const std::pair<std::string_view, int*> numbers[] = {
+      {"--width", &width},     {"--height", &height}, {"--spp", &spp},       {"--slices", &slices},
+      {"--threads", &threads}, {"--runs", &runs},     {"--frames", &frames}, {"--frame-spp", &frame_spp}};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    const auto next = [&] { return i + 1 < argc ? std::atoi(argv[++i]) : 0; };
-    if (a == "--width")
-      width = next();
-    else if (a == "--height")
-      height = next();
-    else if (a == "--spp")
-      spp = next();
-    else if (a == "--slices")
-      slices = next();
-    else if (a == "--threads")
-      threads = next();
-    else if (a == "--runs")
-      runs = next();
-    else if (a == "--frames")
-      frames = next();
-    else if (a == "--frame-spp")
-      frame_spp = next();
+    const auto number =
+        std::find_if(std::begin(numbers), std::end(numbers), [&](const auto& n) { return n.first == a; });
+    if (number != std::end(numbers))
+      *number->second = i + 1 < argc ? std::atoi(argv[++i]) : 0;
     else if (a == "--frame-scene" && i + 1 < argc)
       frame_scene = argv[++i];
     else if (a == "-h" || a == "--help") {

@@ -6,6 +6,7 @@
 #include "core/compiler/compile.h"
 #include "core/compiler/compile_graph.h"
 #include "core/render/batch_render.h"
+#include "bench/bench_stats.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,10 +20,7 @@ namespace {
 using namespace inkray;
 using Clock = std::chrono::steady_clock;
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+using bench::median;
 
 SceneDesc stage(const MaterialVariant& ball) {
   SceneDesc d;

@@ -6,6 +6,7 @@
 #include "core/geometry/mesh_normals.h"
 #include "core/geometry/obj_loader.h"
 #include "core/geometry/triangle_mesh.h"
+#include "bench/bench_stats.h"
 
 #include <algorithm>
 #include <chrono>
@@ -52,8 +53,7 @@ double median_ms(int runs, F&& f) {
     f();
     t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  return bench::median(t);
 }
 
 }  // namespace

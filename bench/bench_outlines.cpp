@@ -6,6 +6,7 @@
 #include "core/render/batch_render.h"
 #include "core/compiler/compile.h"
 #include "core/document/json_io.h"
+#include "bench/bench_stats.h"
 
 #include <algorithm>
 #include <chrono>
@@ -33,8 +34,7 @@ double seconds_per_spp(const SceneDesc& desc, int spp, int runs, int threads, ui
     times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / spp);
     *rays = session.stats().rays;
   }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+  return bench::median(times);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "core/render/render_session.h"
 #include "core/compiler/compile.h"
 #include "core/document/json_io.h"
+#include "bench/bench_stats.h"
 
 #include <sys/resource.h>
 
@@ -46,10 +47,7 @@ struct Options {
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
+using bench::median;
 
 double peak_rss_mib() {
   rusage usage{};

@@ -6,6 +6,7 @@
 #include "core/document/scene_hash.h"
 #include "core/film/partial_channels.h"
 #include "core/film/partial_seal.h"
+#include "core/image/exr_memory.h"
 #include "core/io/file_bytes.h"
 #include "core/io/json_bounds.h"
 
@@ -36,11 +37,6 @@ uint32_t get_u32(const std::string& s, size_t at) {
   return v;
 }
 
-struct Attribute {
-  std::string type;
-  std::string value;
-};
-
 std::string ints(std::initializer_list<int> values) {
   std::string s;
   for (const int v : values) put_u32(s, uint32_t(v));
@@ -62,9 +58,9 @@ std::string tiles_text(const std::vector<uint8_t>& tiles) {
   return s;
 }
 
-std::map<std::string, Attribute> partial_attributes(const PartialInfo& info,
-                                                    const std::string& channel_checksums) {
-  std::map<std::string, Attribute> a;
+std::map<std::string, ExrAttribute> partial_attributes(const PartialInfo& info,
+                                                       const std::string& channel_checksums) {
+  std::map<std::string, ExrAttribute> a;
   a["inkray.format"] = {"string", std::string(kPartialFormat)};
   a["inkray.version"] = {"int", ints({kPartialVersion})};
   a["inkray.imageSize"] = {"v2i", ints({info.width, info.height})};
@@ -110,12 +106,17 @@ struct LoadedImage {
   LoadedImage& operator=(const LoadedImage&) = delete;
 };
 
+// Errors are one line: tinyexr's reasons can end in, or hold, line breaks.
+std::string one_line(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  return s;
+}
+
 std::string take_error(const char* err, const char* fallback) {
   std::string s = err ? err : fallback;
   if (err) FreeEXRErrorMessage(err);
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  std::replace(s.begin(), s.end(), '\n', ' ');  // errors are one line
-  return s;
+  return one_line(std::move(s));
 }
 
 // An attribute's name or type as read, for a message: one line of plain characters.
@@ -132,7 +133,7 @@ std::string version_problem(int version) {
 
 // Reads the attributes of a parsed header into `info`; false with *error (no file name).
 bool parse_attributes(const EXRHeader& h, PartialInfo* info, std::string* error) {
-  std::map<std::string, Attribute> found;
+  std::map<std::string, ExrAttribute> found;
   for (int i = 0; i < h.num_custom_attributes; ++i) {
     const EXRAttribute& a = h.custom_attributes[i];
     std::string value =
@@ -375,55 +376,17 @@ bool encode_partial(const Film& film, const PartialInfo& info, std::string* byte
   for (size_t c = 0; c < exr.size(); ++c)
     checksums += (c ? "," : "") + hash_hex(plane_checksum(planes[c].data(), n));
 
-  std::vector<unsigned char*> data(exr.size());
-  std::vector<EXRChannelInfo> infos(exr.size());
-  std::vector<int> types(exr.size()), requested(exr.size());
-  for (size_t c = 0; c < exr.size(); ++c) {
-    data[c] = reinterpret_cast<unsigned char*>(planes[c].data());
-    std::memset(&infos[c], 0, sizeof infos[c]);
-    std::strncpy(infos[c].name, exr[c].name.c_str(), sizeof infos[c].name - 1);
-    infos[c].pixel_type = types[c] = requested[c] = exr[c].pixel_type;
-  }
-  EXRImage image;
-  InitEXRImage(&image);
-  image.images = data.data();
-  image.width = w.width();
-  image.height = w.height();
-  image.num_channels = int(exr.size());
-
-  const std::map<std::string, Attribute> attributes = partial_attributes(held, checksums);
-  std::vector<EXRAttribute> custom;
-  for (const auto& [name, a] : attributes) {
-    EXRAttribute e;
-    std::memset(&e, 0, sizeof e);
-    std::strncpy(e.name, name.c_str(), sizeof e.name - 1);
-    std::strncpy(e.type, a.type.c_str(), sizeof e.type - 1);
-    e.value = reinterpret_cast<unsigned char*>(const_cast<char*>(a.value.data()));
-    e.size = int(a.value.size());
-    custom.push_back(e);
-  }
-  EXRHeader header;
-  InitEXRHeader(&header);
+  std::vector<ExrPlane> exr_planes;
+  for (size_t c = 0; c < exr.size(); ++c)
+    exr_planes.push_back({exr[c].name.c_str(), exr[c].pixel_type, planes[c].data()});
   // RLE: the sums' low words are noise that ZIP spends long on for little; RLE packs the
   // runs of zeros (lines, AOVs, empty pixels) at a third of ZIP's time, in twice its size.
-  header.compression_type = n < 256 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_RLE;
-  header.num_channels = int(exr.size());
-  header.channels = infos.data();
-  header.pixel_types = types.data();
-  header.requested_pixel_types = requested.data();
-  header.num_custom_attributes = int(custom.size());
-  header.custom_attributes = custom.data();
-
-  unsigned char* memory = nullptr;
-  const char* err = nullptr;
-  const size_t size = SaveEXRImageToMemory(&image, &header, &memory, &err);
-  if (size == 0 || !memory) {
-    *error = "partial: EXR encoding failed (" + take_error(err, "no reason given") + ")";
-    std::free(memory);
+  std::string reason;
+  if (!encode_exr_planes(w.width(), w.height(), exr_planes, partial_attributes(held, checksums),
+                         n < 256 ? ExrCompression::none : ExrCompression::rle, bytes, &reason)) {
+    *error = "partial: EXR encoding failed (" + one_line(reason.empty() ? "no reason given" : reason) + ")";
     return false;
   }
-  bytes->assign(reinterpret_cast<const char*>(memory), size);
-  std::free(memory);
   return seal_partial(bytes, error);
 }
 

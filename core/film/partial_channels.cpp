@@ -1,13 +1,11 @@
 #include "core/film/partial_channels.h"
 
-#include <tinyexr.h>
-
 #include <algorithm>
 #include <cstring>
+#include <type_traits>
 
 namespace inkray {
 
-static_assert(kExrUint == TINYEXR_PIXELTYPE_UINT && kExrFloat == TINYEXR_PIXELTYPE_FLOAT);
 std::vector<PartialChannel> partial_channels(const PartialInfo& info) {
   std::vector<PartialChannel> c;
   const char* rgb[3] = {"R", "G", "B"};
@@ -51,116 +49,90 @@ std::vector<PartialChannel> partial_channels(const PartialInfo& info) {
   return c;
 }
 
-double channel_value(const FilmPixel& p, PartialField f, int k) {
-  switch (f) {
-    case PartialField::preview: {
-      const uint32_t n = p.count[0] + p.count[1];
-      return n ? (p.sum[0][k] + p.sum[1][k]) / double(n) : 0.0;
-    }
-    case PartialField::sum_even:
-      return p.sum[0][k];
-    case PartialField::sum_odd:
-      return p.sum[1][k];
-    case PartialField::count_even:
-      return p.count[0];
-    case PartialField::count_odd:
-      return p.count[1];
-    case PartialField::albedo:
-      return p.albedo_sum[k];
-    case PartialField::normal:
-      return p.normal_sum[k];
-    case PartialField::depth:
-      return p.depth_sum;
-    case PartialField::band:
-      return p.band_sum;
-    case PartialField::hits:
-      return p.hit_count;
-    case PartialField::object_id:
-      return p.object_id;
-    case PartialField::material_id:
-      return p.material_id;
-    case PartialField::ids_mixed:
-      return p.ids_mixed;
-    case PartialField::coverage:
-      return p.lines.coverage[size_t(k)];
-    case PartialField::weight:
-      return p.lines.weight;
-    case PartialField::override_weight:
-      return p.lines.override_weight;
-    case PartialField::override_color:
-      return p.lines.override_color[k];
-    case PartialField::rays:
-      return p.lines.rays;
-    case PartialField::hit_rays:
-      return p.lines.hit_rays;
-    case PartialField::line_count:
-      return p.line_count;
-  }
-  return 0.0;
-}
+namespace {
 
-void set_channel_value(FilmPixel& p, PartialField f, int k, double v) {
+// Calls `use` with the field that holds channel `f` (component `k`) of `p`, a FilmPixel
+// or a const one: reading and writing channels name each field once. The preview,
+// worked out from the sums, is held in no field.
+template <class Pixel, class Use>
+void with_field(Pixel& p, PartialField f, int k, Use&& use) {
   switch (f) {
     case PartialField::preview:
       break;
     case PartialField::sum_even:
-      p.sum[0][k] = v;
+      use(p.sum[0][k]);
       break;
     case PartialField::sum_odd:
-      p.sum[1][k] = v;
+      use(p.sum[1][k]);
       break;
     case PartialField::count_even:
-      p.count[0] = uint32_t(v);
+      use(p.count[0]);
       break;
     case PartialField::count_odd:
-      p.count[1] = uint32_t(v);
+      use(p.count[1]);
       break;
     case PartialField::albedo:
-      p.albedo_sum[k] = v;
+      use(p.albedo_sum[k]);
       break;
     case PartialField::normal:
-      p.normal_sum[k] = v;
+      use(p.normal_sum[k]);
       break;
     case PartialField::depth:
-      p.depth_sum = v;
+      use(p.depth_sum);
       break;
     case PartialField::band:
-      p.band_sum = v;
+      use(p.band_sum);
       break;
     case PartialField::hits:
-      p.hit_count = uint32_t(v);
+      use(p.hit_count);
       break;
     case PartialField::object_id:
-      p.object_id = int(v);
+      use(p.object_id);
       break;
     case PartialField::material_id:
-      p.material_id = int(v);
+      use(p.material_id);
       break;
     case PartialField::ids_mixed:
-      p.ids_mixed = uint32_t(v);
+      use(p.ids_mixed);
       break;
     case PartialField::coverage:
-      p.lines.coverage[size_t(k)] = v;
+      use(p.lines.coverage[size_t(k)]);
       break;
     case PartialField::weight:
-      p.lines.weight = v;
+      use(p.lines.weight);
       break;
     case PartialField::override_weight:
-      p.lines.override_weight = v;
+      use(p.lines.override_weight);
       break;
     case PartialField::override_color:
-      p.lines.override_color[k] = v;
+      use(p.lines.override_color[k]);
       break;
     case PartialField::rays:
-      p.lines.rays = v;
+      use(p.lines.rays);
       break;
     case PartialField::hit_rays:
-      p.lines.hit_rays = v;
+      use(p.lines.hit_rays);
       break;
     case PartialField::line_count:
-      p.line_count = uint32_t(v);
+      use(p.line_count);
       break;
   }
+}
+
+}  // namespace
+
+double channel_value(const FilmPixel& p, PartialField f, int k) {
+  if (f == PartialField::preview) {
+    const uint32_t n = p.count[0] + p.count[1];
+    return n ? (p.sum[0][k] + p.sum[1][k]) / double(n) : 0.0;
+  }
+  double v = 0.0;
+  with_field(p, f, k, [&](const auto& field) { v = double(field); });
+  return v;
+}
+
+void set_channel_value(FilmPixel& p, PartialField f, int k, double v) {
+  with_field(p, f, k, [&](auto& field) { field = std::remove_reference_t<decltype(field)>(v); });
 }
 
 std::vector<ExrChannel> exr_channels(const std::vector<PartialChannel>& channels) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/film/film_partial.h"
+#include "core/image/exr_memory.h"
 
 #include <cstdint>
 #include <string>
@@ -44,7 +45,6 @@ struct PartialChannel {
 };
 
 // One EXR channel: a film channel, or one word of a double.
-inline constexpr int kExrUint = 0, kExrFloat = 2;  // TINYEXR_PIXELTYPE_UINT, _FLOAT
 struct ExrChannel {
   std::string name;
   size_t channel;  // into partial_channels

@@ -2,6 +2,7 @@
 // replacement) and reading textures and PFM back.
 #include "core/image/image_io.h"
 
+#include "core/image/exr_memory.h"
 #include "core/image/image_header.h"
 #include "core/image/view_transform.h"
 #include "core/io/atomic_file.h"
@@ -51,40 +52,17 @@ bool encode_exr(const std::filesystem::path& file, const RgbImage& image, std::s
     planes[c].resize(n);
     for (size_t i = 0; i < n; ++i) planes[c][i] = image.pixels[i][c];
   }
-  float* channel_data[3] = {planes[2].data(), planes[1].data(), planes[0].data()};  // B, G, R
-  EXRImage exr_image;
-  InitEXRImage(&exr_image);
-  exr_image.images = reinterpret_cast<unsigned char**>(channel_data);
-  exr_image.width = image.width;
-  exr_image.height = image.height;
-  exr_image.num_channels = 3;
-
-  EXRChannelInfo channels[3] = {};
-  int pixel_types[3], requested_types[3];
-  for (int c = 0; c < 3; ++c) {
-    channels[c].name[0] = "BGR"[c];
-    pixel_types[c] = requested_types[c] = TINYEXR_PIXELTYPE_FLOAT;
-  }
-  EXRHeader header;
-  InitEXRHeader(&header);
-  header.compression_type =
-      image.width < 16 && image.height < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
-  header.num_channels = 3;
-  header.channels = channels;
-  header.pixel_types = pixel_types;
-  header.requested_pixel_types = requested_types;
-
-  unsigned char* memory = nullptr;
-  const char* err = nullptr;
-  const size_t size = SaveEXRImageToMemory(&exr_image, &header, &memory, &err);
-  if (size == 0 || !memory) {
-    *error = file.string() + ": EXR encoding failed" + (err ? std::string(" (") + err + ")" : "");
-    if (err) FreeEXRErrorMessage(err);
-    std::free(memory);
+  std::string reason;
+  if (!encode_exr_planes(image.width, image.height,
+                         {{"B", kExrFloat, planes[2].data()},
+                          {"G", kExrFloat, planes[1].data()},
+                          {"R", kExrFloat, planes[0].data()}},
+                         {},
+                         image.width < 16 && image.height < 16 ? ExrCompression::none : ExrCompression::zip,
+                         bytes, &reason)) {
+    *error = file.string() + ": EXR encoding failed" + (reason.empty() ? "" : " (" + reason + ")");
     return false;
   }
-  bytes->assign(reinterpret_cast<const char*>(memory), size);
-  std::free(memory);
   return true;
 }
 

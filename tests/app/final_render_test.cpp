@@ -3,7 +3,7 @@
 // the very image one run renders; every bad input a one-line error.
 #include "core/film/film_partial.h"
 #include "core/image/image_io.h"
-#include "tests/support/file_helpers.h"
+#include "tests/support/program_run.h"
 
 #include <gtest/gtest.h>
 
@@ -19,17 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-RunResult run(const std::string& program, const std::string& args) {
-  RunResult r;
-  r.output =
-      testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/" + program + " " + args, &r.exit_code);
-  return r;
-}
+using namespace inkray::testing;
 
 RgbImage read(const fs::path& file) {
   RgbImage img;
@@ -45,12 +35,12 @@ class FinalRender : public ::testing::Test {
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   // The Cornell box with outlines, small: lines make the adaptive line sampler decide.
   RunResult render(const std::string& args) const {
-    return run("inkray-render", std::string(INKRAY_SOURCE_DIR) +
-                                    "/scenes/cornell_outlines.json --width 40 "
-                                    "--height 30 -q " +
-                                    args);
+    return run_program("inkray-render", std::string(INKRAY_SOURCE_DIR) +
+                                            "/scenes/cornell_outlines.json --width 40 "
+                                            "--height 30 -q " +
+                                            args);
   }
-  RunResult merge(const std::string& args) const { return run("inkray-merge", args); }
+  RunResult merge(const std::string& args) const { return run_program("inkray-merge", args); }
   testing::ScratchFolder scratch_;  // removed with the fixture
   const std::filesystem::path dir_ = scratch_.path();
 };
@@ -196,7 +186,7 @@ TEST_F(FinalRender, TimeLimitWritesACheckpointThatResumes) {
     "objects": [{"name": "room", "material": "white", "shape": {"type": "sphere", "radius": 10}},
                 {"name": "lamp", "material": "glow", "shape": {"type": "sphere", "center": [0, 0, -5], "radius": 1}}]})";
   const std::string base = scene.string() + " -q -o " + path("room.pfm");
-  RunResult r = run("inkray-render", base + " --spp 100000 --time 0.6 --checkpoint 60");
+  RunResult r = run_program("inkray-render", base + " --spp 100000 --time 0.6 --checkpoint 60");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const fs::path checkpoint = path("room.pfm.checkpoint.exr");
   PartialInfo info;
@@ -204,10 +194,10 @@ TEST_F(FinalRender, TimeLimitWritesACheckpointThatResumes) {
   ASSERT_TRUE(read_partial(checkpoint, &info, nullptr, &error)) << error;
   ASSERT_GT(info.end_pass, 0u);
   const std::string spp = std::to_string(info.end_pass + 2);
-  r = run("inkray-render", base + " --spp " + spp + " --resume");
+  r = run_program("inkray-render", base + " --spp " + spp + " --resume");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_FALSE(fs::exists(checkpoint));
-  r = run("inkray-render", scene.string() + " -q -o " + path("straight.pfm") + " --spp " + spp);
+  r = run_program("inkray-render", scene.string() + " -q -o " + path("straight.pfm") + " --spp " + spp);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read(dir_ / "straight.pfm").pixels, read(dir_ / "room.pfm").pixels);
 }
@@ -216,10 +206,10 @@ TEST_F(FinalRender, MergeRefusesPartialsOfOtherRenders) {
   ASSERT_EQ(render("--samples 0 4 -o " + path("a.exr")).exit_code, 0);
   ASSERT_EQ(render("--samples 4 8 --seed 3 -o " + path("seed.exr")).exit_code, 0);
   ASSERT_EQ(render("--samples 2 6 -o " + path("overlap.exr")).exit_code, 0);
-  ASSERT_EQ(run("inkray-render", std::string(INKRAY_SOURCE_DIR) +
-                                     "/scenes/toon.json --width 40 --height 30 -q "
-                                     "--samples 4 8 -o " +
-                                     path("toon.exr"))
+  ASSERT_EQ(run_program("inkray-render", std::string(INKRAY_SOURCE_DIR) +
+                                             "/scenes/toon.json --width 40 --height 30 -q "
+                                             "--samples 4 8 -o " +
+                                             path("toon.exr"))
                 .exit_code,
             0);
   ASSERT_EQ(render("--samples 0 4 --crop 0 0 20 30 -o " + path("left.exr")).exit_code, 0);
@@ -262,7 +252,7 @@ TEST_F(FinalRender, FramesFollowThePatternAndResumeSkipsDoneOnes) {
     EXPECT_TRUE(fs::exists(dir_ / f)) << f;
   const std::string scene =
       std::string(INKRAY_SOURCE_DIR) + "/scenes/cornell_outlines.json --width 40 --height 30 ";
-  r = run("inkray-render", scene + "--frames 2-6:2 --spp 1 -o " + path("g_####.pfm"));
+  r = run_program("inkray-render", scene + "--frames 2-6:2 --spp 1 -o " + path("g_####.pfm"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir_ / "g_0002.pfm"));
   EXPECT_TRUE(fs::exists(dir_ / "g_0004.pfm"));
@@ -272,8 +262,8 @@ TEST_F(FinalRender, FramesFollowThePatternAndResumeSkipsDoneOnes) {
   EXPECT_EQ(lines_of(r.output), 3u) << r.output;
 
   fs::remove(dir_ / "d_002.pfm");
-  r = run("inkray-render", scene + "--frames 1-3 --spp 1 --resume -o " + path("f_##.pfm") +
-                               " --aov depth=" + path("d_###.pfm"));
+  r = run_program("inkray-render", scene + "--frames 1-3 --spp 1 --resume -o " + path("f_##.pfm") +
+                                       " --aov depth=" + path("d_###.pfm"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("frame 1: " + path("f_01.pfm") + " exists, skipped"), std::string::npos)
       << r.output;

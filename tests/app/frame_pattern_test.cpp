@@ -1,7 +1,7 @@
 // Frame numbers in output names (inkray-render --frames): a run of '#' of any length is the
 // zero-padded frame, and a range in which two frames, or two outputs of one frame, would
 // write the same file is refused before anything renders.
-#include "tests/support/file_helpers.h"
+#include "tests/support/program_run.h"
 
 #include <gtest/gtest.h>
 
@@ -17,18 +17,11 @@ namespace fs = std::filesystem;
 using testing::Names;
 using testing::ScratchFolder;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;
-};
+using testing::RunResult;
 
 RunResult render(const std::string& scene, const std::string& args) {
-  RunResult r;
-  r.output = testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render " +
-                                      std::string(INKRAY_SOURCE_DIR) + "/scenes/" + scene +
-                                      " --width 8 --height 8 --spp 1 -q " + args,
-                                  &r.exit_code);
-  return r;
+  return testing::run_program("inkray-render", std::string(INKRAY_SOURCE_DIR) + "/scenes/" + scene +
+                                                   " --width 8 --height 8 --spp 1 -q " + args);
 }
 
 Names files_in(const ScratchFolder& dir) {

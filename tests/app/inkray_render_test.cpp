@@ -1,6 +1,6 @@
 // inkray-render end to end: exit codes, one-line errors, written images.
 #include "core/image/image_io.h"
-#include "tests/support/file_helpers.h"
+#include "tests/support/program_run.h"
 
 #include <gtest/gtest.h>
 
@@ -21,17 +21,9 @@
 namespace inkray {
 namespace {
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
+using testing::RunResult;
 
-RunResult run_render(const std::string& args) {
-  RunResult r;
-  r.output =
-      testing::run_command(std::string(INKRAY_BINARY_DIR) + "/bin/inkray-render " + args, &r.exit_code);
-  return r;
-}
+RunResult run_render(const std::string& args) { return testing::run_program("inkray-render", args); }
 
 class InkrayRender : public ::testing::Test {
  protected:

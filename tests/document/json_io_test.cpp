@@ -5,6 +5,7 @@
 #include "core/document/json_write.h"
 #include "core/document/scene_checks.h"
 #include "core/document/tagged_variant.h"
+#include "tests/support/damaged_text.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -398,38 +399,30 @@ struct NameCollector {
   }
 };
 
-template <class Desc>
+// Every Param name of each struct, and of each alternative of each variant with its
+// type name (quoted).
+template <class... Descs>
 void collect_names(NameCollector& c) {
-  Desc desc;
-  visit_params(desc, c);
+  const auto collect = [&](auto desc) { visit_params(desc, c); };
+  (collect(Descs{}), ...);
 }
-
-template <class Variant>
+template <class... Variants>
 void collect_alternative_names(NameCollector& c) {
-  for_each_alternative<Variant>([&]<class T>(std::type_identity<T>) {
-    if constexpr (Tagged<T>) {
-      c.names.push_back("\"" + std::string(T::type_name) + "\"");
-      collect_names<T>(c);
-    }
-  });
+  (for_each_alternative<Variants>([&]<class T>(std::type_identity<T>) {
+     if constexpr (Tagged<T>) {
+       c.names.push_back("\"" + std::string(T::type_name) + "\"");
+       collect_names<T>(c);
+     }
+   }),
+   ...);
 }
 
 // A parameter added to desc.h must be documented: its name appears as a table row.
 TEST(SceneJsonDocs, EveryParameterIsDocumented) {
   NameCollector c;
-  collect_names<CameraDesc>(c);
-  collect_names<RenderSettings>(c);
-  collect_names<ObjectDesc>(c);
-  collect_names<RotationDesc>(c);
-  collect_names<OutlineDesc>(c);
-  collect_names<LineStyleDesc>(c);
-  collect_names<LineOverrideDesc>(c);
-  collect_names<StrokeEmitterDesc>(c);
-  collect_alternative_names<EnvironmentDesc>(c);
-  collect_alternative_names<MaterialVariant>(c);
-  collect_alternative_names<ColorInput>(c);
-  collect_alternative_names<ShapeVariant>(c);
-  collect_alternative_names<LightVariant>(c);
+  collect_names<CameraDesc, RenderSettings, ObjectDesc, RotationDesc, OutlineDesc, LineStyleDesc,
+                LineOverrideDesc, StrokeEmitterDesc>(c);
+  collect_alternative_names<EnvironmentDesc, MaterialVariant, ColorInput, ShapeVariant, LightVariant>(c);
   const std::string doc = format_doc();
   for (const std::string& name : c.names) {
     const bool is_type = name.starts_with('"');
@@ -608,28 +601,11 @@ TEST(SceneJsonBroken, MutatedFilesNeverThrow) {
   const std::string original = read_file(kValid / "cornell.json");
   ASSERT_FALSE(original.empty());
   std::mt19937 rng(99);
-  const std::string alphabet = "{}[]\":,0123456789.-+eE aZ\\\n\x01\xff";
+  const testing::TextDamage damage{
+      .alphabet = "{}[]\":,0123456789.-+eE aZ\\\n\x01\xff", .max_erase = 16, .max_copy = 32, .inserts = true};
   int accepted = 0;
   for (int iteration = 0; iteration < 3000; ++iteration) {
-    std::string text = original;
-    const int edits = 1 + static_cast<int>(rng() % 4);
-    for (int e = 0; e < edits && !text.empty(); ++e) {
-      const std::size_t at = rng() % text.size();
-      switch (rng() % 4) {
-        case 0:
-          text[at] = alphabet[rng() % alphabet.size()];
-          break;
-        case 1:
-          text.erase(at, 1 + rng() % 16);
-          break;
-        case 2:
-          text.insert(at, text.substr(rng() % text.size(), 1 + rng() % 32));
-          break;
-        default:
-          text.insert(at, 1, alphabet[rng() % alphabet.size()]);
-          break;
-      }
-    }
+    const std::string text = testing::damaged(original, rng, damage);
     SceneLoadResult r;
     ASSERT_NO_THROW(r = parse_scene(text, kValid, "mutated.json"));
     ASSERT_EQ(r.scene.has_value(), r.errors.empty());

@@ -5,6 +5,7 @@
 #include "core/document/scene_hash.h"
 #include "core/film/partial_merge.h"
 #include "core/film/partial_seal.h"
+#include "core/image/exr_memory.h"
 #include "core/image/image_io.h"
 #include "core/io/atomic_file.h"
 #include "tests/support/odd_film.h"
@@ -12,9 +13,7 @@
 #include "tests/support/file_helpers.h"
 
 #include <gtest/gtest.h>
-#include <tinyexr.h>
 
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -136,7 +135,7 @@ TEST_F(FilmPartial, AnythingElseIsOneErrorNamingTheFile) {
 }
 
 // An EXR with these attributes and float channels; attribute values as raw bytes.
-using Attributes = std::map<std::string, std::pair<std::string, std::string>>;
+using Attributes = std::map<std::string, ExrAttribute>;
 
 std::string le32(std::initializer_list<int> values) {
   std::string s;
@@ -167,47 +166,12 @@ Attributes good_attributes() {
 }
 
 void write_exr(const fs::path& file, const Attributes& attributes, const std::vector<std::string>& channels) {
-  std::vector<std::vector<float>> planes(channels.size(), std::vector<float>(4, 0.f));
-  std::vector<unsigned char*> data;
-  std::vector<EXRChannelInfo> infos(channels.size());
-  std::vector<int> types(channels.size(), TINYEXR_PIXELTYPE_FLOAT);
-  for (size_t c = 0; c < channels.size(); ++c) {
-    data.push_back(reinterpret_cast<unsigned char*>(planes[c].data()));
-    std::memset(&infos[c], 0, sizeof infos[c]);
-    std::strncpy(infos[c].name, channels[c].c_str(), 255);
-    infos[c].pixel_type = TINYEXR_PIXELTYPE_FLOAT;
-  }
-  EXRImage image;
-  InitEXRImage(&image);
-  image.images = data.data();
-  image.width = image.height = 2;
-  image.num_channels = int(channels.size());
-  std::vector<EXRAttribute> custom;
-  for (const auto& [name, a] : attributes) {
-    EXRAttribute e;
-    std::memset(&e, 0, sizeof e);
-    std::strncpy(e.name, name.c_str(), 255);
-    std::strncpy(e.type, a.first.c_str(), 255);
-    e.value = reinterpret_cast<unsigned char*>(const_cast<char*>(a.second.data()));
-    e.size = int(a.second.size());
-    custom.push_back(e);
-  }
-  EXRHeader header;
-  InitEXRHeader(&header);
-  header.num_channels = int(channels.size());
-  header.channels = infos.data();
-  header.pixel_types = types.data();
-  header.requested_pixel_types = types.data();
-  header.num_custom_attributes = int(custom.size());
-  header.custom_attributes = custom.data();
+  const std::vector<float> zeros(4, 0.f);
+  std::vector<ExrPlane> planes;
+  for (const std::string& name : channels) planes.push_back({name.c_str(), kExrFloat, zeros.data()});
+  std::string bytes, error;
+  ASSERT_TRUE(encode_exr_planes(2, 2, planes, attributes, ExrCompression::none, &bytes, &error)) << error;
   // Sealed as the encoder seals a partial, so the reader looks past the checksums.
-  unsigned char* memory = nullptr;
-  const char* err = nullptr;
-  const size_t size = SaveEXRImageToMemory(&image, &header, &memory, &err);
-  ASSERT_GT(size, 0u) << (err ? err : "");
-  std::string bytes(reinterpret_cast<const char*>(memory), size);
-  std::free(memory);
-  std::string error;
   ASSERT_TRUE(seal_partial(&bytes, &error)) << error;
   std::ofstream(file, std::ios::binary) << bytes;
 }

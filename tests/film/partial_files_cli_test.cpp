@@ -5,7 +5,7 @@
 #include "core/film/line_decisions_file.h"
 #include "core/io/atomic_file.h"
 
-#include "tests/support/file_helpers.h"
+#include "tests/support/program_run.h"
 
 #include <gtest/gtest.h>
 
@@ -20,20 +20,13 @@ namespace inkray {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::RunResult;
 using testing::ScratchFolder;
-
-struct CliRun {
-  int exit_code = -1;
-  std::string output;
-};
 
 // Under `timeout`, so a reader that blocks (on a FIFO) fails the test instead of hanging
 // it: timeout's own status, 124, is then the exit code.
-CliRun run_cli(const std::string& program, const std::string& args) {
-  CliRun r;
-  r.output = testing::run_command(
-      "timeout 60 " + std::string(INKRAY_BINARY_DIR) + "/bin/" + program + " " + args, &r.exit_code);
-  return r;
+RunResult run_cli(const std::string& program, const std::string& args) {
+  return testing::run_program(program, args, "timeout 60 ");
 }
 
 size_t lines_of(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
@@ -53,7 +46,7 @@ class PartialFiles : public ::testing::Test {
       "objects": [{"name": "m", "material": "white", "shape": {"type": "mesh", "path": "meshes/m.obj"}}]})";
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  CliRun render(const std::string& args) const {
+  RunResult render(const std::string& args) const {
     return run_cli("inkray-render", path("scene.json") + " -q " + args);
   }
   ScratchFolder dir_;
@@ -62,7 +55,7 @@ class PartialFiles : public ::testing::Test {
 TEST_F(PartialFiles, MergeRefusesAMeshChangedBetweenSlices) {
   ASSERT_EQ(render("--samples 0 2 -o " + path("a.exr")).exit_code, 0);
   ASSERT_EQ(render("--samples 2 4 -o " + path("b.exr")).exit_code, 0);
-  CliRun r = run_cli("inkray-merge", path("same.pfm") + " " + path("a.exr") + " " + path("b.exr"));
+  RunResult r = run_cli("inkray-merge", path("same.pfm") + " " + path("a.exr") + " " + path("b.exr"));
   ASSERT_EQ(r.exit_code, 0) << r.output;  // the slices of one scene merge
 
   // The same scene file, the mesh's bytes changed (one vertex moved) before the second slice.
@@ -94,7 +87,7 @@ TEST_F(PartialFiles, MergeRefusesAMeshChangedBetweenSlices) {
 // Neither is read: /dev/zero never ends and opening a FIFO waits for a writer forever.
 TEST_F(PartialFiles, MergeRefusesDevicesAndFifosPromptly) {
   ASSERT_EQ(render("--samples 0 4 -o " + path("a.exr")).exit_code, 0);
-  CliRun r = run_cli("inkray-merge", path("out.pfm") + " " + path("a.exr") + " /dev/zero");
+  RunResult r = run_cli("inkray-merge", path("out.pfm") + " " + path("a.exr") + " /dev/zero");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("/dev/zero: not a regular file (a character device)"), std::string::npos)
       << r.output;
@@ -130,7 +123,7 @@ TEST_F(PartialFiles, DeepHeadersAreRefusedByMergeResumeAndLineDecisions) {
   ASSERT_TRUE(write_file_atomically(dir_ / "lines.bin", encode_line_decisions(decisions, info), &error))
       << error;
 
-  CliRun r = run_cli("inkray-merge", path("out.pfm") + " " + path("deep.exr"));
+  RunResult r = run_cli("inkray-merge", path("out.pfm") + " " + path("deep.exr"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("deep.exr: attribute inkray.scene nests deeper than 256 levels"), std::string::npos)
       << r.output;

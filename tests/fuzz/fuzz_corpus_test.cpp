@@ -43,8 +43,10 @@ std::vector<fs::path> inputs_of(const std::string& target) {
   return files;
 }
 
+// Every target has inputs: one without would pass by replaying nothing.
 void replay(const std::string& target, Harness harness) {
   const std::vector<fs::path> files = inputs_of(target);
+  EXPECT_FALSE(files.empty()) << "no inputs for " << target;
   for (const fs::path& file : files) {
     std::ifstream in(file, std::ios::binary);
     const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -61,45 +63,14 @@ void replay(const std::string& target, Harness harness) {
   ::testing::Test::RecordProperty("inputs", static_cast<int>(files.size()));
 }
 
-TEST(FuzzCorpus, SceneReader) {
-  EXPECT_FALSE(inputs_of("scene_reader").empty());
-  replay("scene_reader", fuzz_scene_reader);
-}
-
-TEST(FuzzCorpus, ObjLoader) {
-  EXPECT_FALSE(inputs_of("obj_loader").empty());
-  replay("obj_loader", fuzz_obj_loader);
-}
-
-TEST(FuzzCorpus, ImageReader) {
-  EXPECT_FALSE(inputs_of("image_reader").empty());
-  replay("image_reader", fuzz_image_reader);
-}
-
-TEST(FuzzCorpus, GraphCompile) {
-  EXPECT_FALSE(inputs_of("graph_compile").empty());
-  replay("graph_compile", fuzz_graph_compile);
-}
-
-TEST(FuzzCorpus, PartialReader) {
-  EXPECT_FALSE(inputs_of("partial_reader").empty());
-  replay("partial_reader", fuzz_partial_reader);
-}
-
-TEST(FuzzCorpus, CheckpointReader) {
-  EXPECT_FALSE(inputs_of("checkpoint_reader").empty());
-  replay("checkpoint_reader", fuzz_checkpoint_reader);
-}
-
-TEST(FuzzCorpus, LineDecisionsReader) {
-  EXPECT_FALSE(inputs_of("line_decisions_reader").empty());
-  replay("line_decisions_reader", fuzz_line_decisions_reader);
-}
-
-TEST(FuzzCorpus, AnimationTracks) {
-  EXPECT_FALSE(inputs_of("animation_tracks").empty());
-  replay("animation_tracks", fuzz_animation_tracks);
-}
+TEST(FuzzCorpus, SceneReader) { replay("scene_reader", fuzz_scene_reader); }
+TEST(FuzzCorpus, ObjLoader) { replay("obj_loader", fuzz_obj_loader); }
+TEST(FuzzCorpus, ImageReader) { replay("image_reader", fuzz_image_reader); }
+TEST(FuzzCorpus, GraphCompile) { replay("graph_compile", fuzz_graph_compile); }
+TEST(FuzzCorpus, PartialReader) { replay("partial_reader", fuzz_partial_reader); }
+TEST(FuzzCorpus, CheckpointReader) { replay("checkpoint_reader", fuzz_checkpoint_reader); }
+TEST(FuzzCorpus, LineDecisionsReader) { replay("line_decisions_reader", fuzz_line_decisions_reader); }
+TEST(FuzzCorpus, AnimationTracks) { replay("animation_tracks", fuzz_animation_tracks); }
 
 }  // namespace
 }  // namespace inkray

@@ -1,6 +1,7 @@
 // OBJ meshes: attributes, vertex splitting, triangulation of convex and concave
 // polygons, and broken files that must fail with the file name and line.
 #include "core/geometry/obj_loader.h"
+#include "tests/support/damaged_text.h"
 
 #include <gtest/gtest.h>
 
@@ -236,23 +237,11 @@ TEST(ObjLoader, MutatedFilesNeverCrash) {
   ss << in.rdbuf();
   const std::string original = ss.str();
   std::mt19937 rng(7);
-  const std::string alphabet = "0123456789-/ .fvtn#\n\x00\xff";
+  // The NUL ends the literal: the alphabet is the characters before it.
+  const testing::TextDamage damage{
+      .alphabet = "0123456789-/ .fvtn#\n\x00\xff", .max_erase = 8, .max_copy = 24};
   for (int iteration = 0; iteration < 3000; ++iteration) {
-    std::string text = original;
-    for (int e = 0, edits = 1 + static_cast<int>(rng() % 4); e < edits && !text.empty(); ++e) {
-      const std::size_t at = rng() % text.size();
-      switch (rng() % 3) {
-        case 0:
-          text[at] = alphabet[rng() % alphabet.size()];
-          break;
-        case 1:
-          text.erase(at, 1 + rng() % 8);
-          break;
-        default:
-          text.insert(at, text.substr(rng() % text.size(), 1 + rng() % 24));
-          break;
-      }
-    }
+    const std::string text = testing::damaged(original, rng, damage);
     std::string error;
     std::optional<TriangleMeshData> m;
     ASSERT_NO_THROW(m = parse_obj(text, "mutated.obj", &error));

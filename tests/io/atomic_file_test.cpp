@@ -18,9 +18,9 @@ namespace {
 namespace fs = std::filesystem;
 using namespace inkray::testing;
 
-TEST(AtomicFile, WritesAndReplacesLeavingNoTemporary) {
-  ScratchFolder dir;
-  std::string error;
+class AtomicFile : public InScratchFolder {};
+
+TEST_F(AtomicFile, WritesAndReplacesLeavingNoTemporary) {
   ASSERT_TRUE(write_file_atomically(dir / "a.txt", "first", &error)) << error;
   EXPECT_EQ(read_file(dir / "a.txt"), "first");
   ASSERT_TRUE(write_file_atomically(dir / "a.txt", std::string(1 << 20, 'x'), &error)) << error;
@@ -28,32 +28,26 @@ TEST(AtomicFile, WritesAndReplacesLeavingNoTemporary) {
   EXPECT_EQ(dir.entries(), Names{"a.txt"});
 }
 
-TEST(AtomicFile, KeepsThePermissionsOfTheReplacedFile) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, KeepsThePermissionsOfTheReplacedFile) {
   write_file(dir / "a.txt", "old");
   fs::permissions(dir / "a.txt", fs::perms::owner_read | fs::perms::group_read);
-  std::string error;
   ASSERT_TRUE(write_file_atomically(dir / "a.txt", "new", &error)) << error;
   EXPECT_EQ(fs::status(dir / "a.txt").permissions() & fs::perms::all,
             fs::perms::owner_read | fs::perms::group_read);
   EXPECT_EQ(read_file(dir / "a.txt"), "new");
 }
 
-TEST(AtomicFile, ReplacesANewInodeSoOpenReadersKeepTheOldFile) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, ReplacesANewInodeSoOpenReadersKeepTheOldFile) {
   write_file(dir / "a.txt", "old contents");
   std::ifstream reader(dir / "a.txt");
-  std::string error;
   ASSERT_TRUE(write_file_atomically(dir / "a.txt", "new", &error)) << error;
   std::string seen;
   std::getline(reader, seen);
   EXPECT_EQ(seen, "old contents");  // a truncating write would have emptied it under the reader
 }
 
-TEST(AtomicFile, RenameFailureKeepsTheCauseAndRemovesTheTemporary) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, RenameFailureKeepsTheCauseAndRemovesTheTemporary) {
   StagedFile staged;
-  std::string error;
   ASSERT_TRUE(staged.stage(dir / "out.png", "bytes", &error)) << error;
   EXPECT_TRUE(fs::exists(staged.temporary()));
   fs::create_directory(dir / "out.png");  // appears between staging and the rename
@@ -63,9 +57,7 @@ TEST(AtomicFile, RenameFailureKeepsTheCauseAndRemovesTheTemporary) {
   EXPECT_TRUE(fs::is_empty(dir / "out.png"));
 }
 
-TEST(AtomicFile, FailuresNameTheFileAndTheCause) {
-  ScratchFolder dir;
-  std::string error;
+TEST_F(AtomicFile, FailuresNameTheFileAndTheCause) {
   fs::create_directory(dir / "taken");
   EXPECT_FALSE(write_file_atomically(dir / "taken", "x", &error));
   EXPECT_EQ(error, "cannot replace " + (dir / "taken").string() + ": Is a directory");
@@ -81,10 +73,8 @@ TEST(AtomicFile, FailuresNameTheFileAndTheCause) {
   EXPECT_EQ(dir.entries(), (Names{"file", "taken"}));
 }
 
-TEST(AtomicFile, DroppingAStagedFileRemovesItsTemporary) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, DroppingAStagedFileRemovesItsTemporary) {
   write_file(dir / "a.txt", "old");
-  std::string error;
   {
     StagedFile staged;
     ASSERT_TRUE(staged.stage(dir / "a.txt", "new", &error)) << error;
@@ -97,13 +87,11 @@ TEST(AtomicFile, DroppingAStagedFileRemovesItsTemporary) {
   EXPECT_EQ(read_file(dir / "a.txt"), "old");
 }
 
-TEST(AtomicFile, WritingThroughASymlinkReplacesItsTarget) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, WritingThroughASymlinkReplacesItsTarget) {
   fs::create_directory(dir / "real");
   write_file(dir / "real" / "scene.json", "old");
   fs::create_symlink("real/scene.json", dir / "link.json");
   fs::create_symlink("link.json", dir / "link2.json");  // a chain of links
-  std::string error;
   ASSERT_TRUE(write_file_atomically(dir / "link2.json", "new", &error)) << error;
   EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
   EXPECT_TRUE(fs::is_symlink(dir / "link2.json"));
@@ -117,21 +105,17 @@ TEST(AtomicFile, WritingThroughASymlinkReplacesItsTarget) {
   EXPECT_EQ(read_file(dir / "real" / "fresh.json"), "fresh");
 }
 
-TEST(AtomicFile, LinkLoopsFailWithTheCause) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, LinkLoopsFailWithTheCause) {
   fs::create_symlink("b", dir / "a");
   fs::create_symlink("a", dir / "b");
-  std::string error;
   EXPECT_FALSE(write_file_atomically(dir / "a", "x", &error));
   EXPECT_NE(error.find((dir / "a").string()), std::string::npos) << error;
   EXPECT_NE(error.find("Too many levels of symbolic links"), std::string::npos) << error;
   EXPECT_EQ(dir.entries(), (Names{"a", "b"}));
 }
 
-TEST(AtomicFile, TemporariesAreHiddenAndCarryThePid) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, TemporariesAreHiddenAndCarryThePid) {
   StagedFile staged;
-  std::string error;
   ASSERT_TRUE(staged.stage(dir / "a.json", "x", &error)) << error;
   const std::string name = staged.temporary().filename().string();
   EXPECT_EQ(name.rfind(".a.json.inkray-tmp-" + std::to_string(::getpid()) + "-", 0), 0u) << name;
@@ -149,16 +133,13 @@ TEST(AtomicFile, TemporariesAreHiddenAndCarryThePid) {
     EXPECT_FALSE(is_temporary_of(dir / "a.json", other, &pid)) << other;
 }
 
-TEST(AtomicFile, LongNamesStillFitTheTemporary) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, LongNamesStillFitTheTemporary) {
   const std::string name(250, 'n');
-  std::string error;
   ASSERT_TRUE(write_file_atomically(dir / name, "x", &error)) << error;
   EXPECT_EQ(dir.entries(), Names{name});
 }
 
-TEST(AtomicFile, RemovesOnlyTemporariesOfDeadWriters) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, RemovesOnlyTemporariesOfDeadWriters) {
   write_file(dir / "x.json", "scene");
   const std::string dead = ".x.json.inkray-tmp-" + std::to_string(dead_pid()) + "-0123abcd";
   const std::string live = ".x.json.inkray-tmp-" + std::to_string(::getpid()) + "-0123abcd";
@@ -185,8 +166,7 @@ TEST(AtomicFile, RemovesOnlyTemporariesOfDeadWriters) {
   EXPECT_EQ(dir.entries().size(), 6u);  // the folder with a temporary's name is not a temporary
 }
 
-TEST(AtomicFile, StaleTemporariesAreLookedForBesideTheLinkedFile) {
-  ScratchFolder dir;
+TEST_F(AtomicFile, StaleTemporariesAreLookedForBesideTheLinkedFile) {
   fs::create_directory(dir / "real");
   fs::create_symlink("real/x.json", dir / "x.json");
   const std::string dead = ".x.json.inkray-tmp-" + std::to_string(dead_pid()) + "-0123abcd";

@@ -25,6 +25,17 @@ inline std::string editor_unavailable() {
   return {};
 }
 
+// A test of the running editor: skipped where it cannot run, in a scratch folder (which is
+// also the editor's config folder), with a place for its exit code.
+class EditorTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
+  }
+  ScratchFolder dir;
+  int code = 0;
+};
+
 // "INKRAY_CONFIG_DIR=... xvfb-run ... inkray --window-size W H": append the options.
 inline std::string editor_command(const std::filesystem::path& config_dir, int width, int height) {
   const std::string size = std::to_string(width) + "x" + std::to_string(height);

@@ -54,6 +54,14 @@ class ScratchFolder {
   std::filesystem::path path_;
 };
 
+// A fixture for tests of code that writes files: a scratch folder, and the error message
+// the code under test fills in. `class AtomicFile : public InScratchFolder {};` then TEST_F.
+class InScratchFolder : public ::testing::Test {
+ protected:
+  ScratchFolder dir;
+  std::string error;
+};
+
 // Runs a shell command; its stdout and stderr together, and its exit code (-1 if it did not exit).
 inline std::string run_command(const std::string& cmd, int* exit_code) {
   std::string out;

@@ -10,37 +10,31 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace inkray {
 namespace {
 
 using namespace inkray::testing;
 
-TEST(EditorDrop, MeshThenImageLandOnTheDocument) {
-  if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
-  int code = 0;
-  const auto dir = std::filesystem::temp_directory_path() / "inkray_editor_drop_test";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+class EditorDrop : public EditorTest {};
+
+TEST_F(EditorDrop, MeshThenImageLandOnTheDocument) {
   const std::filesystem::path source(INKRAY_SOURCE_DIR);
   std::filesystem::copy_file(source / "tests/data/meshes/cube.obj", dir / "cube.obj");
   std::filesystem::copy_file(source / "resources/brushes/dab.png", dir / "dab.png");
   std::ofstream(dir / "notes.txt") << "not a scene\n";
   const auto dump = dir / "after.json";
   const std::string out =
-      run_command(editor_command(dir, 1280, 720) + " --frames 20 --screenshot " +
+      run_command(editor_command(dir.path(), 1280, 720) + " --frames 20 --screenshot " +
                       (dir / "shot.png").string() + " --drop " + (dir / "cube.obj").string() + " --drop " +
                       (dir / "dab.png").string() + " --drop " + (dir / "notes.txt").string() +
                       " --scene-dump " + dump.string() + " " + (source / "scenes/toon.json").string(),
                   &code);
   ASSERT_EQ(code, 0) << out;
 
-  std::ifstream in(dump);
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string json = read_file(dump);
   const SceneLoadResult loaded = load_scene(dump, ReadFor::editing);
-  ASSERT_TRUE(loaded.scene) << text.str();
+  ASSERT_TRUE(loaded.scene) << json;
   const SceneDesc& scene = *loaded.scene;
   const auto cube = std::find_if(scene.objects.begin(), scene.objects.end(),
                                  [](const ObjectDesc& o) { return o.name == "cube"; });
@@ -52,7 +46,6 @@ TEST(EditorDrop, MeshThenImageLandOnTheDocument) {
   const auto material = std::find_if(scene.materials.begin(), scene.materials.end(),
                                      [&](const MaterialDesc& m) { return m.name == cube->material; });
   ASSERT_NE(material, scene.materials.end());
-  const std::string json = text.str();
   EXPECT_NE(json.find("dab.png"), std::string::npos) << "the dropped image is not in the document";
   EXPECT_EQ(json.find("notes.txt"), std::string::npos);
 }

@@ -17,14 +17,12 @@ namespace {
 
 using namespace inkray::testing;
 
-TEST(EditorExport, ThroughTheDialogOnAllCoresToTheChosenFile) {
-  if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
-  int code = 0;
-  const auto dir = std::filesystem::temp_directory_path() / "inkray_editor_export_test";
-  std::filesystem::remove_all(dir);
+class EditorExport : public EditorTest {};
+
+TEST_F(EditorExport, ThroughTheDialogOnAllCoresToTheChosenFile) {
   std::filesystem::create_directories(dir / "renders");
   const auto output = dir / "renders" / "final.png";
-  const std::string out = run_command(editor_command(dir, 1280, 720) + " --frames 5 --screenshot " +
+  const std::string out = run_command(editor_command(dir.path(), 1280, 720) + " --frames 5 --screenshot " +
                                           (dir / "shot.png").string() + " --export " + output.string() + " " +
                                           std::string(INKRAY_SOURCE_DIR) + "/scenes/toon.json",
                                       &code);

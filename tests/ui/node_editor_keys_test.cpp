@@ -40,10 +40,9 @@ key i
 print-keys render/max_depth
 )";
 
-TEST(NodeEditorKeys, NodeAndRenderFieldsShowTheFrameAndTakeKeys) {
-  if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
-  ScratchFolder dir;
-  int code = 0;
+class NodeEditorKeys : public EditorTest {};
+
+TEST_F(NodeEditorKeys, NodeAndRenderFieldsShowTheFrameAndTakeKeys) {
   const std::string out = run_editor_script(
       dir, 1600, 900, kScript, "--threads 1 --node-editor paint --frames 80", "node_keys.json", &code);
   ASSERT_EQ(code, 0) << out;

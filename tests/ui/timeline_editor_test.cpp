@@ -58,10 +58,9 @@ print-keys materials/red/albedo
 print-frame
 )";
 
-TEST(TimelineEditor, KeysScrubsPlaysAndUndoesFromTheKeyboardAndMouse) {
-  if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
-  ScratchFolder dir;
-  int code = 0;
+class TimelineEditor : public EditorTest {};
+
+TEST_F(TimelineEditor, KeysScrubsPlaysAndUndoesFromTheKeyboardAndMouse) {
   const std::string out = run_editor_script(dir, 1280, 720, kScript, "--threads 1 --select ball --frames 110",
                                             "timeline.json", &code);
   ASSERT_EQ(code, 0) << out;

@@ -282,16 +282,10 @@ std::string key_path(const SceneDesc& scene, const Selection& item, std::string_
       path = "outlines/";
       break;
     case ItemKind::object:
-      path = entry_path("objects", scene.objects[size_t(item.index)].name);
-      break;
     case ItemKind::light:
-      path = entry_path("lights", scene.lights[size_t(item.index)].name);
-      break;
     case ItemKind::material:
-      path = entry_path("materials", scene.materials[size_t(item.index)].name);
-      break;
     case ItemKind::emitter:
-      path = entry_path("strokes", scene.strokes[size_t(item.index)].name);
+      path = entry_path(section_of(item.kind), item_name(scene, item));
       break;
     case ItemKind::none:
       return {};
