@@ -104,16 +104,16 @@ double bare_embree_rate(const RenderScene& scene, int threads, double seconds) {
         for (int depth = 0; depth < 5; ++depth) {
           Hit hit;
           ++count;
-          if (!scene.geometry.intersect(ray, kInfinity, &hit)) break;
-          const SurfaceInteraction si = scene.geometry.interaction(ray, hit);
+          if (!scene.world->geometry.intersect(ray, kInfinity, &hit)) break;
+          const SurfaceInteraction si = scene.world->geometry.interaction(ray, hit);
           const Normal3 n = glm::dot(si.ng, ray.d) < 0.f ? si.ng : -si.ng;
           const Frame frame = Frame::from_z(n);
-          const Point3 target =
-              scene.scene_center +
-              0.3f * scene.scene_radius * sample_uniform_sphere(sampler.get_pair(2 + 2 * uint32_t(depth)));
+          const Point3 target = scene.world->scene_center +
+                                0.3f * scene.world->scene_radius *
+                                    sample_uniform_sphere(sampler.get_pair(2 + 2 * uint32_t(depth)));
           ++count;
-          scene.geometry.occluded(spawn_ray_to(si.p, si.p_error, n, target, Vec3(0.f), Vec3(0.f)),
-                                  kShadowTMax);
+          scene.world->geometry.occluded(spawn_ray_to(si.p, si.p_error, n, target, Vec3(0.f), Vec3(0.f)),
+                                         kShadowTMax);
           ray =
               spawn_ray(si.p, si.p_error, n,
                         frame.to_world(sample_cosine_hemisphere(sampler.get_pair(3 + 2 * uint32_t(depth)))));

@@ -137,12 +137,12 @@ struct StrokeMemory {
 
 StrokeMemory stroke_memory(const RenderScene& scene, size_t roots) {
   StrokeMemory m;
-  for (uint32_t i = 0; i < scene.geometry.shape_count(); ++i) {
-    const AlphaMask* mask = scene.geometry.alpha_mask(i);
+  for (uint32_t i = 0; i < scene.world->geometry.shape_count(); ++i) {
+    const AlphaMask* mask = scene.world->geometry.alpha_mask(i);
     if (!mask) continue;
-    const ShapeBvh& bvh = scene.geometry.bvh(i);
+    const ShapeBvh& bvh = scene.world->geometry.bvh(i);
     std::vector<const TriangleMesh*> meshes = {&std::get<TriangleMesh>(bvh.shape())};
-    const auto& world = std::get<TriangleMesh>(scene.geometry.shape(i));
+    const auto& world = std::get<TriangleMesh>(scene.world->geometry.shape(i));
     if (&world != meshes[0]) meshes.push_back(&world);
     for (const TriangleMesh* mesh : meshes)
       m.geometry += bytes_of(mesh->positions) + bytes_of(mesh->normals) + bytes_of(mesh->uvs) +
@@ -160,16 +160,17 @@ StrokeMemory stroke_memory(const RenderScene& scene, size_t roots) {
 void time_parts(const RenderScene& scene, const StrokeEmitterDesc& e, double* brush_s, double* place_s,
                 double* grow_s, double* bvh_s) {
   uint32_t object = 0;
-  while (scene.objects[object].name != e.object) ++object;
+  while (scene.world->objects[object].name != e.object) ++object;
   std::string error;
-  const auto surface = StrokeSurface::from_shape(scene.geometry.shape(object), &error);
+  const auto surface = StrokeSurface::from_shape(scene.world->geometry.shape(object), &error);
   const auto tb = Clock::now();
   const auto mask = make_brush_mask(e, {}, &error);
   *brush_s = seconds_since(tb);
   const auto t0 = Clock::now();
   const std::vector<SurfacePoint> roots = place_roots(*surface, size_t(e.count), uint32_t(e.seed));
   *place_s = seconds_since(t0);
-  const std::vector<Color> colors = stroke_colors(scene.materials, scene.objects[object].material, roots, e);
+  const std::vector<Color> colors =
+      stroke_colors(scene.world->materials, scene.world->objects[object].material, roots, e);
   const auto t1 = Clock::now();
   StrokeGeometry g = build_stroke_mesh(*surface, roots, colors, e);
   *grow_s = seconds_since(t1);

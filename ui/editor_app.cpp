@@ -383,8 +383,8 @@ void EditorApp::frame_selected() {
   if (state_.selection.kind == ItemKind::object && is_valid(scene, state_.selection)) {
     object_bounds(scene.objects[size_t(state_.selection.index)], &center, &radius);
   } else if (auto compiled = renderer_.scene()) {
-    center = compiled->scene_center;
-    radius = compiled->scene_radius;
+    center = compiled->world->scene_center;
+    radius = compiled->world->scene_radius;
   } else {
     return;
   }

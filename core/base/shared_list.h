@@ -46,8 +46,7 @@ class SharedList {
     Iterator() = default;
     Iterator(List* list, size_t index) : list_(list), index_(index) {}
     operator Iterator<true>() const  // NOLINT: converts as a vector's iterator does
-      requires(!kConst)
-    {
+        requires(!kConst) {
       return {list_, index_};
     }
 
@@ -197,7 +196,8 @@ class SharedList {
   std::vector<std::shared_ptr<T>> all_pointers() const {
     std::vector<std::shared_ptr<T>> pointers;
     pointers.reserve(size_);
-    for (const auto& chunk : chunks_) pointers.insert(pointers.end(), chunk->items.begin(), chunk->items.end());
+    for (const auto& chunk : chunks_)
+      pointers.insert(pointers.end(), chunk->items.begin(), chunk->items.end());
     return pointers;
   }
   // Lays the items out in chunks again (after an insertion or removal): the items stay

@@ -92,19 +92,19 @@ bool same_crease_patches(const OutlineDesc& a, const OutlineDesc& b) {
          (!wants_crease_patches(a) || a.crease.threshold == b.crease.threshold);
 }
 void set_crease_patches(const OutlineDesc& outlines,
-                        const std::vector<std::shared_ptr<const PlacedShape>>& placed, RenderScene& scene,
+                        const std::vector<std::shared_ptr<const PlacedShape>>& placed, World& world,
                         AssetCache& assets) {
   const bool wanted = wants_crease_patches(outlines);
-  for (size_t i = 0; i < scene.objects.size(); ++i)
-    scene.objects[i].crease_patches =
+  for (size_t i = 0; i < world.objects.size(); ++i)
+    world.objects[i].crease_patches =
         wanted && i < placed.size() ? crease_patches(*placed[i], outlines.crease.threshold, assets) : nullptr;
 }
 
-void set_bounds(RenderScene& scene) {
+void set_bounds(World& world) {
   Point3 lo(0.f), hi(0.f);
-  if (scene.geometry.shape_count()) scene.geometry.bounds(&lo, &hi);
-  scene.scene_center = 0.5f * (lo + hi);
-  scene.scene_radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+  if (world.geometry.shape_count()) world.geometry.bounds(&lo, &hi);
+  world.scene_center = 0.5f * (lo + hi);
+  world.scene_radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
 }
 
 Stage stage_of(AssetKind kind) {
@@ -243,48 +243,54 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
     // patches of a new threshold.
     auto scene = std::make_shared<RenderScene>(*last_);
     set_view(desc, shutter, *scene);
-    if (!same_crease_patches(last_->outlines, desc.outlines))
-      set_crease_patches(desc.outlines, placed_, *scene, assets_);
+    if (!same_crease_patches(last_->outlines, desc.outlines)) {
+      auto world = std::make_shared<World>(*last_->world);
+      set_crease_patches(desc.outlines, placed_, *world, assets_);
+      scene->world = std::move(world);
+    }
     remember(std::move(scene), last_document_materials_);
     return result;
   }
 
   auto scene = std::make_shared<RenderScene>();
   set_view(desc, shutter, *scene);
+  auto world = std::make_shared<World>();
   std::vector<std::vector<std::string>> material_keys = material_keys_;
   if (!last_ || result.changes.has(Stage::material)) {
     // Only the materials whose description changed are compiled again.
     std::vector<Material> last_table;
     if (last_)
-      last_table.assign(last_->materials.begin(),
-                        last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
+      last_table.assign(last_->world->materials.begin(),
+                        last_->world->materials.begin() + std::ptrdiff_t(last_document_materials_));
     // An image changed on disk (or appeared) is seen only by compiling its materials again.
     LastMaterials previous;
     if (last_desc_ && !file_changes.has(Stage::material))
       previous = {&last_desc_->materials, &last_table, &material_keys_};
-    counters_.materials += compile_materials(desc, *scene, result.errors, assets_, material_keys, previous,
+    counters_.materials += compile_materials(desc, *world, result.errors, assets_, material_keys, previous,
                                              options.stand_in_for_broken_graphs ? &result.warnings : nullptr);
     ++counters_.material_tables;
   } else {
     for (const auto& keys : material_keys_)
       assets_.touch(keys);  // the images the reused table holds stay cached
-    scene->materials.assign(last_->materials.begin(),
-                            last_->materials.begin() + std::ptrdiff_t(last_document_materials_));
-    scene->material_names.assign(last_->material_names.begin(),
-                                 last_->material_names.begin() + std::ptrdiff_t(last_document_materials_));
+    world->materials.assign(last_->world->materials.begin(),
+                            last_->world->materials.begin() + std::ptrdiff_t(last_document_materials_));
+    world->material_names.assign(
+        last_->world->material_names.begin(),
+        last_->world->material_names.begin() + std::ptrdiff_t(last_document_materials_));
   }
-  const size_t document_materials = scene->materials.size();
+  const size_t document_materials = world->materials.size();
   std::map<std::string, uint32_t> material_index;
-  for (size_t i = 0; i < scene->material_names.size(); ++i)
-    material_index[scene->material_names[i]] = uint32_t(i);
+  for (size_t i = 0; i < world->material_names.size(); ++i)
+    material_index[world->material_names[i]] = uint32_t(i);
 
   if (!shutter && reuse_objects(desc, result.changes, file_changes.has(Stage::geometry),
-                                options.stand_in_for_missing_assets, *scene)) {
-    compile_lights(desc, *scene);
+                                options.stand_in_for_missing_assets, *world)) {
+    compile_lights(desc, *world);
     ++counters_.light_tables;
     // No finish_compile(): the shapes of the objects that stayed were not looked up, and
     // the next compile that places every object drops what neither uses.
     material_keys_ = std::move(material_keys);
+    scene->world = std::move(world);
     remember(std::move(scene), document_materials);
     return result;
   }
@@ -350,11 +356,11 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
         result.errors.push_back(where() + "while the shutter is open, " + moving.problem);
         continue;
       }
-      scene->geometry.add_moving(moving.bvh, moving.open, moving.close, nullptr, placed->world);
+      world->geometry.add_moving(moving.bvh, moving.open, moving.close, nullptr, placed->world);
     } else {
-      scene->geometry.add(placed->bvh, placed->to_world, placed->world);
+      world->geometry.add(placed->bvh, placed->to_world, placed->world);
     }
-    scene->objects.push_back({obj.name, mat->second, -1, uint32_t(i), mat->second,
+    world->objects.push_back({obj.name, mat->second, -1, uint32_t(i), mat->second,
                               combine_lines(desc.materials[first_material[obj.material]].lines, obj.lines),
                               Transform{to_world.inv, to_world.m}, Transform{}});
     anchors.push_back(stroke_anchor(obj, i, *placed, std::move(key), objects));
@@ -378,20 +384,20 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   // Strokes grow on the compiled objects and join the same BVH.
   if (cancelled()) return result;
   StrokeBuild strokes{assets_, counters_, options.cancel};
-  compile_strokes(desc, *scene, anchors, strokes, result.errors);
+  compile_strokes(desc, *world, anchors, strokes, result.errors);
   if (cancelled() || !result.errors.empty()) return result;
-  set_crease_patches(desc.outlines, placed_objects, *scene, assets_);
+  set_crease_patches(desc.outlines, placed_objects, *world, assets_);
   // Objects that moved, appeared or changed shape need a new top level; else the
   // last one serves (a material edit).
-  if (last_ && scene->geometry.same_instances(last_->geometry)) {
-    scene->geometry = last_->geometry;
+  if (last_ && world->geometry.same_instances(last_->world->geometry)) {
+    world->geometry = last_->world->geometry;
   } else {
-    scene->geometry.commit(last_ ? &last_->geometry : nullptr);
+    world->geometry.commit(last_ ? &last_->world->geometry : nullptr);
     ++counters_.top_levels;
   }
 
-  set_bounds(*scene);
-  compile_lights(desc, *scene);
+  set_bounds(*world);
+  compile_lights(desc, *world);
   ++counters_.light_tables;
 
   assets_.finish_compile();
@@ -399,23 +405,26 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   placed_ = std::move(placed_objects);
   placements_ = std::move(placements);
   last_stand_ins_ = options.stand_in_for_missing_assets;
+  scene->world = std::move(world);
   remember(std::move(scene), document_materials);
   return result;
 }
 
 bool SceneCompiler::reuse_objects(const SceneDesc& desc, StageSet changes, bool files_changed, bool stand_ins,
-                                  RenderScene& scene) {
+                                  World& world) {
   // Strokes are painted from their objects' materials and grow on their shapes, so a
   // scene with emitters takes the whole pass, as does one whose files changed on disk.
   if (!last_ || changes.has(Stage::geometry) || changes.has(Stage::strokes) || files_changed || rest_ ||
-      !desc.strokes.empty() || !last_desc_->strokes.empty() || last_->geometry.any_moving() ||
+      !desc.strokes.empty() || !last_desc_->strokes.empty() || last_->world->geometry.any_moving() ||
       stand_ins != last_stand_ins_ || desc.base_dir != last_desc_->base_dir ||
       desc.objects.size() != last_desc_->objects.size() ||
-      last_document_materials_ != last_->materials.size() || scene.material_names != last_->material_names)
+      last_document_materials_ != last_->world->materials.size() ||
+      world.material_names != last_->world->material_names)
     return false;
   // The compiled object of each document object (-1: hidden or not placeable then).
   std::vector<int> compiled(desc.objects.size(), -1);
-  for (size_t o = 0; o < last_->objects.size(); ++o) compiled[last_->objects[o].source] = int(o);
+  for (size_t o = 0; o < last_->world->objects.size(); ++o)
+    compiled[last_->world->objects[o].source] = int(o);
   struct Move {
     size_t object;
     std::string key;
@@ -444,32 +453,33 @@ bool SceneCompiler::reuse_objects(const SceneDesc& desc, StageSet changes, bool 
       moves.push_back({i, std::move(key), std::move(placed)});
     }
   }
-  scene.objects = last_->objects;
-  scene.geometry = moves.empty() ? last_->geometry : EmbreeScene::with_instances_of(last_->geometry);
+  world.objects = last_->world->objects;
+  world.geometry =
+      moves.empty() ? last_->world->geometry : EmbreeScene::with_instances_of(last_->world->geometry);
   const bool creases = wants_crease_patches(desc.outlines);
   for (Move& m : moves) {
     const auto index = uint32_t(compiled[m.object]);
-    RenderObject& o = scene.objects[index];
+    RenderObject& o = world.objects[index];
     const Transform to_world = transform_from_desc(desc.objects[m.object].transform);
     o.to_object = Transform{to_world.inv, to_world.m};
     o.crease_patches = creases ? crease_patches(*m.placed, desc.outlines.crease.threshold, assets_) : nullptr;
-    scene.geometry.replace(index, m.placed->bvh, m.placed->to_world, m.placed->world);
+    world.geometry.replace(index, m.placed->bvh, m.placed->to_world, m.placed->world);
     placed_[index] = m.placed;
     // The placement it leaves is dropped, so a drag does not pile up world-space copies.
     if (placements_[m.object].key != m.key) assets_.drop(placements_[m.object].key);
     placements_[m.object] = {std::move(m.key), std::move(m.placed)};
   }
-  for (RenderObject& o : scene.objects)
+  for (RenderObject& o : world.objects)
     o.lines = combine_lines(desc.materials[o.material].lines, desc.objects[o.source].lines);
   if (!same_crease_patches(last_->outlines, desc.outlines))
-    set_crease_patches(desc.outlines, placed_, scene, assets_);
+    set_crease_patches(desc.outlines, placed_, world, assets_);
   if (moves.empty()) {
-    scene.scene_center = last_->scene_center;
-    scene.scene_radius = last_->scene_radius;
+    world.scene_center = last_->world->scene_center;
+    world.scene_radius = last_->world->scene_radius;
   } else {
-    scene.geometry.commit(&last_->geometry);
+    world.geometry.commit(&last_->world->geometry);
     ++counters_.top_levels;
-    set_bounds(scene);
+    set_bounds(world);
   }
   return true;
 }

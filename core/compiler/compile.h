@@ -72,13 +72,13 @@ class SceneCompiler {
   CompileResult compile_world(const SceneDesc& desc, const CompileOptions& options,
                               const std::vector<AssetReference>& references);
 
-  // The objects and top level of last_ for `scene` (compiled up to its materials), with
+  // The objects and top level of last_ for `world` (compiled up to its materials), with
   // the objects whose transforms changed placed anew, when the edit `changes` touched
   // nothing else of the objects (a material, light or transform edit) and none of
-  // them moves while the shutter is open. False, leaving `scene` as it was, when the
+  // them moves while the shutter is open. False, leaving `world` as it was, when the
   // whole object pass is needed.
   bool reuse_objects(const SceneDesc& desc, StageSet changes, bool files_changed, bool stand_ins,
-                     RenderScene& scene);
+                     World& world);
   // More moved objects than this take the whole object pass.
   static constexpr size_t kMostMovedObjects = 64;
   // Where object `index`'s strokes grow: its place at the shot's first frame.
@@ -90,7 +90,7 @@ class SceneCompiler {
   const SceneDesc* rest_ = nullptr;     // the document at frame_start, while a compile of strokes needs it
   std::optional<SceneDesc> last_desc_;  // the document last_ was compiled from
   std::shared_ptr<const RenderScene> last_;
-  size_t last_document_materials_ = 0;                   // last_->materials before the stroke materials
+  size_t last_document_materials_ = 0;  // last_->world->materials before the stroke materials
   std::vector<std::vector<std::string>> material_keys_;  // per material: the cache entries it was built from
   std::map<std::string, std::string> file_stamps_;       // asset file -> stamp, at the last compile
   // The placed shapes of last_'s document objects (its first objects), whose crease

@@ -43,8 +43,8 @@ std::optional<RectAreaLight> rect_light_for(const TriangleMesh& mesh, uint32_t o
 }
 
 // Emissive shapes become area lights when they can be sampled exactly.
-std::optional<Light> area_light_for(const RenderScene& scene, uint32_t object) {
-  const Shape& shape = scene.geometry.shape(object);
+std::optional<Light> area_light_for(const World& world, uint32_t object) {
+  const Shape& shape = world.geometry.shape(object);
   if (const auto* mesh = std::get_if<TriangleMesh>(&shape)) {
     if (auto rect = rect_light_for(*mesh, object)) return *rect;
     std::vector<float> areas(mesh->triangle_count());
@@ -77,23 +77,23 @@ EnvironmentLight compile_environment(const EnvironmentDesc& env, float scene_rad
 
 }  // namespace
 
-void compile_lights(const SceneDesc& desc, RenderScene& scene) {
-  scene.lights.clear();
-  scene.environment_light = -1;
-  for (RenderObject& o : scene.objects) o.light = -1;
+void compile_lights(const SceneDesc& desc, World& world) {
+  world.lights.clear();
+  world.environment_light = -1;
+  for (RenderObject& o : world.objects) o.light = -1;
   // Emissive objects, the lights list, then the environment when it is not black.
-  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
-    if (!material_is_emissive(scene.material_of(o))) continue;
-    if (auto light = area_light_for(scene, o)) {
-      scene.objects[o].light = int(scene.lights.size());
-      scene.lights.push_back(*light);
+  for (uint32_t o = 0; o < world.objects.size(); ++o) {
+    if (!material_is_emissive(world.material_of(o))) continue;
+    if (auto light = area_light_for(world, o)) {
+      world.objects[o].light = int(world.lights.size());
+      world.lights.push_back(*light);
     }
   }
-  for (const LightDesc& l : desc.lights) scene.lights.push_back(compile_light(l, scene.scene_radius));
-  scene.environment = compile_environment(desc.environment, scene.scene_radius);
-  if (max_component(scene.environment.zenith + scene.environment.horizon + scene.environment.nadir) > 0.f) {
-    scene.environment_light = int(scene.lights.size());
-    scene.lights.push_back(scene.environment);
+  for (const LightDesc& l : desc.lights) world.lights.push_back(compile_light(l, world.scene_radius));
+  world.environment = compile_environment(desc.environment, world.scene_radius);
+  if (max_component(world.environment.zenith + world.environment.horizon + world.environment.nadir) > 0.f) {
+    world.environment_light = int(world.lights.size());
+    world.lights.push_back(world.environment);
   }
   // Half by power, half uniformly: power alone all but ignores a small spot
   // next to a sun whose power counts the whole scene's area, though the spot
@@ -101,13 +101,13 @@ void compile_lights(const SceneDesc& desc, RenderScene& scene) {
   // variance by at most twice what power selection gives.
   std::vector<float> power;
   double total = 0.0;
-  for (const Light& l : scene.lights) {
-    power.push_back(std::max(light_power(scene, l), 0.f));
+  for (const Light& l : world.lights) {
+    power.push_back(std::max(light_power(world, l), 0.f));
     total += power.back();
   }
   if (total > 0.0)
     for (float& p : power) p = float(0.5 * p / total + 0.5 / double(power.size()));
-  scene.light_selection = DiscreteDistribution(power);
+  world.light_selection = DiscreteDistribution(power);
 }
 
 }  // namespace inkray

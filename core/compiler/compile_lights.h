@@ -6,9 +6,9 @@
 
 namespace inkray {
 
-// Fills scene.lights, scene.environment(_light), scene.light_selection and the
-// objects' light indices, from scene.objects, materials and geometry (committed)
+// Fills world.lights, world.environment(_light), world.light_selection and the
+// objects' light indices, from world.objects, materials and geometry (committed)
 // and the document's lights and environment.
-void compile_lights(const SceneDesc& desc, RenderScene& scene);
+void compile_lights(const SceneDesc& desc, World& world);
 
 }  // namespace inkray

@@ -176,7 +176,7 @@ std::optional<Material> compile_closure_template(const MaterialVariant& data,
   return compile_material(desc, images, assets, base_dir, error);
 }
 
-size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
+size_t compile_materials(const SceneDesc& desc, World& world, std::vector<std::string>& errors,
                          AssetCache& assets, std::vector<std::vector<std::string>>& keys,
                          const LastMaterials& last, std::vector<std::string>* broken_graphs) {
   const SharedList<MaterialDesc>& list = desc.materials;
@@ -226,11 +226,11 @@ size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<
   std::vector<uint32_t> remap(list.size(), kNoMaterial);
   for (size_t i = 0; i < list.size(); ++i) {
     if (!compiled[i]) continue;
-    remap[i] = uint32_t(scene.materials.size());
-    scene.materials.push_back(std::move(*compiled[i]));
-    scene.material_names.push_back(list[i].name);
+    remap[i] = uint32_t(world.materials.size());
+    world.materials.push_back(std::move(*compiled[i]));
+    world.material_names.push_back(list[i].name);
   }
-  for (Material& m : scene.materials) {
+  for (Material& m : world.materials) {
     if (auto* mix = std::get_if<MixMaterial>(&m)) {
       mix->a = remap[mix->a];
       mix->b = remap[mix->b];

@@ -18,7 +18,7 @@ struct LastMaterials {
   const std::vector<std::vector<std::string>>* keys = nullptr;  // the cache entries each was built from
 };
 
-// Fills scene.materials and scene.material_names in document order; a material
+// Fills world.materials and world.material_names in document order; a material
 // that fails is left out and its error (naming materials[i]) appended. Images
 // come through `assets`. With `last` given and the list of names unchanged, only
 // the materials whose description changed are compiled; returns how many were.
@@ -26,7 +26,7 @@ struct LastMaterials {
 // are touched, so the cache keeps their images). With `broken_graphs` given, a graph
 // that does not compile is drawn in a loud stand-in colour and its errors go there
 // instead of `errors`, so the rest of the scene still renders (the editor's choice).
-size_t compile_materials(const SceneDesc& desc, RenderScene& scene, std::vector<std::string>& errors,
+size_t compile_materials(const SceneDesc& desc, World& world, std::vector<std::string>& errors,
                          AssetCache& assets, std::vector<std::vector<std::string>>& keys,
                          const LastMaterials& last = {}, std::vector<std::string>* broken_graphs = nullptr);
 

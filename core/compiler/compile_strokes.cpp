@@ -83,9 +83,9 @@ std::string paint_key(const SceneDesc& desc, const StrokeEmitterDesc& e, const s
   return key;
 }
 
-std::optional<uint32_t> compiled_object(const RenderScene& scene, const std::string& name) {
-  for (uint32_t o = 0; o < scene.objects.size(); ++o)
-    if (scene.objects[o].name == name) return o;
+std::optional<uint32_t> compiled_object(const World& world, const std::string& name) {
+  for (uint32_t o = 0; o < world.objects.size(); ++o)
+    if (world.objects[o].name == name) return o;
   return std::nullopt;
 }
 
@@ -97,14 +97,14 @@ bool described_object(const SceneDesc& desc, const std::string& name) {
 
 // Builds one emitter's strokes; nullopt when there is nothing to build or on an
 // error (appended to errors).
-std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderScene& scene,
+std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const World& world,
                                           std::span<const StrokeAnchor> anchors, size_t index,
                                           StrokeBuild& build, std::vector<std::string>& errors) {
   const Cancel& cancel = build.cancel;
   const StrokeEmitterDesc& e = desc.strokes[index];
   const std::string where = "strokes[" + std::to_string(index) + "] \"" + e.name + "\": ";
   if (e.count <= 0) return std::nullopt;
-  const auto object = compiled_object(scene, e.object);
+  const auto object = compiled_object(world, e.object);
   if (!object) {
     // A hidden object hides its strokes too; an unknown one is an error.
     if (!described_object(desc, e.object)) errors.push_back(where + "no object named \"" + e.object + "\"");
@@ -131,9 +131,9 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
     shape->roots = place_roots(*surface, size_t(e.count), uint32_t(e.seed), nullptr, cancel);
     if (cancel.requested()) return std::nullopt;
     // Painted in the colours of this compile, which later compiles reuse while they hold.
-    const RenderObject& base = scene.objects[*object];
+    const RenderObject& base = world.objects[*object];
     const std::vector<Color> colors =
-        stroke_colors(scene.materials, base.material, shape->roots, e, anchors[*object].to_object);
+        stroke_colors(world.materials, base.material, shape->roots, e, anchors[*object].to_object);
     StrokeGeometry geometry = build_stroke_mesh(*surface, shape->roots, colors, e, cancel);
     if (cancel.requested()) return std::nullopt;  // unfinished ribbons are never cached
     mask->triangles = std::move(geometry.alpha);
@@ -144,7 +144,7 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
     mask->quads = true;  // stroke_mesh.h: cells of two triangles
     shape->first_vertex = std::move(geometry.first_vertex);
     shape->stroke_of_triangle = stroke_of_triangle(geometry.mesh, shape->first_vertex);
-    shape->painted_key = built.key + "|" + paint_key(desc, e, scene.material_names[base.material]);
+    shape->painted_key = built.key + "|" + paint_key(desc, e, world.material_names[base.material]);
     shape->bvh = std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(geometry.mesh)),
                                                   std::move(mask));
     ++build.counters.shape_bvhs;
@@ -157,32 +157,32 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const RenderSce
 
 }  // namespace
 
-void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const StrokeAnchor> anchors,
+void compile_strokes(const SceneDesc& desc, World& world, std::span<const StrokeAnchor> anchors,
                      StrokeBuild& build, std::vector<std::string>& errors) {
   if (desc.strokes.empty()) return;
   // Build everything before adding any: the surfaces refer to the base objects'
   // meshes, which adding shapes may move.
   std::vector<BuiltStrokes> built;
   for (size_t i = 0; i < desc.strokes.size() && !build.cancel.requested(); ++i)
-    if (auto b = build_emitter(desc, scene, anchors, i, build, errors)) built.push_back(std::move(*b));
+    if (auto b = build_emitter(desc, world, anchors, i, build, errors)) built.push_back(std::move(*b));
   if (!errors.empty() || build.cancel.requested()) return;
   for (BuiltStrokes& b : built) {
-    const uint32_t material = uint32_t(scene.materials.size());
+    const uint32_t material = uint32_t(world.materials.size());
     // Unlit, the stand-in ignores the paint: 2 x 2 squares a stroke.
-    scene.materials.push_back(b.stand_in ? stand_in_material(2.f)
+    world.materials.push_back(b.stand_in ? stand_in_material(2.f)
                                          : Material(DiffuseMaterial{ConstantTexture{Color(1.f)}}));
-    scene.material_names.push_back(b.emitter->name + ".strokes");
+    world.material_names.push_back(b.emitter->name + ".strokes");
     // Copy the base object's record so whatever else it carries (its outline
     // overrides) applies to its strokes too.
-    RenderObject object = scene.objects[b.base_object];
+    RenderObject object = world.objects[b.base_object];
     object.name = b.emitter->name;
     object.material = material;
     object.light = -1;
     const StrokeAnchor& anchor = anchors[b.base_object];
     if (anchor.moving) object.local_to_object = anchor.to_object;  // their BVH lies where they grew
-    const uint32_t base_material = scene.objects[b.base_object].material;
-    scene.objects.push_back(std::move(object));
-    const std::string key = b.key + "|" + paint_key(desc, *b.emitter, scene.material_names[base_material]);
+    const uint32_t base_material = world.objects[b.base_object].material;
+    world.objects.push_back(std::move(object));
+    const std::string key = b.key + "|" + paint_key(desc, *b.emitter, world.material_names[base_material]);
     std::shared_ptr<const MeshPaint> paint;
     if (key != b.shape->painted_key) {
       const std::string paint_entry = key + "|paint";
@@ -191,7 +191,7 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
         paint = build.assets.keep<MeshPaint>(
             paint_entry,
             std::make_shared<const MeshPaint>(MeshPaint{
-                b.shape->stroke_of_triangle, stroke_colors(scene.materials, base_material, b.shape->roots,
+                b.shape->stroke_of_triangle, stroke_colors(world.materials, base_material, b.shape->roots,
                                                            *b.emitter, anchors[b.base_object].to_object)}));
         ++build.counters.stroke_paints;
       }
@@ -214,12 +214,12 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
           at_frame = build.assets.keep<Shape>(
               placed_key, std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(*painted), move)));
       }
-      scene.geometry.add_moving(b.shape->bvh, anchor.rest_to_open, anchor.rest_to_close, painted, at_frame,
+      world.geometry.add_moving(b.shape->bvh, anchor.rest_to_open, anchor.rest_to_close, painted, at_frame,
                                 b.emitter->indirect, paint);
       continue;
     }
     if (move.is_identity()) {
-      scene.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect, paint);
+      world.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect, paint);
       continue;
     }
     // An object that moved since its rest carries its strokes along: the ribbons are
@@ -241,7 +241,7 @@ void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const 
           std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(mesh)), std::move(mask)));
       ++build.counters.shape_bvhs;
     }
-    scene.geometry.add(moved, Transform{}, moved->shared_shape(), b.emitter->indirect, paint);
+    world.geometry.add(moved, Transform{}, moved->shared_shape(), b.emitter->indirect, paint);
   }
 }
 

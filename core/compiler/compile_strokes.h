@@ -48,7 +48,7 @@ struct StrokeBuild {
 // Stops early, leaving the scene unfinished, once `build.cancel` is requested.
 // anchors[o] says where compiled object o's strokes grow; its key finds them again in
 // the cache while the object's rest stays the same.
-void compile_strokes(const SceneDesc& desc, RenderScene& scene, std::span<const StrokeAnchor> anchors,
+void compile_strokes(const SceneDesc& desc, World& world, std::span<const StrokeAnchor> anchors,
                      StrokeBuild& build, std::vector<std::string>& errors);
 
 }  // namespace inkray

@@ -13,8 +13,8 @@ void gather_light_inputs(const RenderScene& scene, const LightReference& ref, fl
   sp.light_color = Color(0.f);
   std::optional<LightSample> best;
   float best_luminance = 0.f;
-  for (const Light& light : scene.lights) {
-    const auto s = sample_light(scene, light, ref, Vec2(0.5f));
+  for (const Light& light : scene.world->lights) {
+    const auto s = sample_light(*scene.world, light, ref, Vec2(0.5f));
     if (!s) continue;
     const float l = luminance(s->radiance);
     if (l > best_luminance) best_luminance = l, best = s;
@@ -24,7 +24,7 @@ void gather_light_inputs(const RenderScene& scene, const LightReference& ref, fl
   sp.light_color = best->radiance / std::max(max_component(best->radiance), 1e-20f);
   ++*rays;
   best->shadow_ray.time = time;
-  sp.shadow = scene.geometry.occluded(best->shadow_ray, best->shadow_t_max) ? 0.f : 1.f;
+  sp.shadow = scene.world->geometry.occluded(best->shadow_ray, best->shadow_t_max) ? 0.f : 1.f;
 }
 
 }  // namespace inkray

@@ -23,15 +23,14 @@ LightSample delta_sample(const LightReference& ref, const Point3& light_p, const
 }
 
 // Completes a sample that reached a point on an emitting surface.
-std::optional<LightSample> surface_sample(const RenderScene& scene, const LightReference& ref,
-                                          uint32_t object, const SurfaceInteraction& on_light,
-                                          float pdf_solid_angle) {
+std::optional<LightSample> surface_sample(const World& world, const LightReference& ref, uint32_t object,
+                                          const SurfaceInteraction& on_light, float pdf_solid_angle) {
   const Vec3 d = on_light.p - ref.p;
   const float dist2 = glm::dot(d, d);
   if (!(dist2 > 0.f) || !(pdf_solid_angle > 0.f) || !std::isfinite(pdf_solid_angle)) return std::nullopt;
   LightSample s;
   s.wi = d / std::sqrt(dist2);
-  s.radiance = material_emission(scene.material_of(object), on_light, glm::dot(-s.wi, on_light.ng));
+  s.radiance = material_emission(world.material_of(object), on_light, glm::dot(-s.wi, on_light.ng));
   if (is_black(s.radiance)) return std::nullopt;
   s.pdf = pdf_solid_angle;
   s.shadow_ray = spawn_ray_to(ref.p, ref.p_error, ref.n, on_light.p, on_light.p_error, on_light.ng);
@@ -73,14 +72,14 @@ SurfaceInteraction mesh_point(const TriangleMesh& mesh, size_t tri, Vec2 b) {
   return si;
 }
 
-std::optional<LightSample> sample_mesh(const RenderScene& scene, const MeshAreaLight& l,
-                                       const LightReference& ref, Vec2 u) {
-  const auto& mesh = std::get<TriangleMesh>(scene.geometry.shape(l.object));
+std::optional<LightSample> sample_mesh(const World& world, const MeshAreaLight& l, const LightReference& ref,
+                                       Vec2 u) {
+  const auto& mesh = std::get<TriangleMesh>(world.geometry.shape(l.object));
   float pmf = 0.f;
   const size_t tri = l.triangles.sample(u.x, &pmf, &u.x);
   SurfaceInteraction on_light = mesh_point(mesh, tri, sample_uniform_triangle(u));
   on_light.object = l.object;
-  return surface_sample(scene, ref, l.object, on_light, area_to_solid_angle(1.f / l.area, ref.p, on_light));
+  return surface_sample(world, ref, l.object, on_light, area_to_solid_angle(1.f / l.area, ref.p, on_light));
 }
 
 // Solid-angle sampling where it pays: near the rectangle, where distance and cosine
@@ -109,9 +108,9 @@ SurfaceInteraction rect_point(const TriangleMesh& mesh, float s, float t) {
   return s >= t ? mesh_point(mesh, 0, Vec2(1.f - s, s - t)) : mesh_point(mesh, 1, Vec2(1.f - t, s));
 }
 
-std::optional<LightSample> sample_rect(const RenderScene& scene, const RectAreaLight& l,
-                                       const LightReference& ref, Vec2 u) {
-  const auto& mesh = std::get<TriangleMesh>(scene.geometry.shape(l.object));
+std::optional<LightSample> sample_rect(const World& world, const RectAreaLight& l, const LightReference& ref,
+                                       Vec2 u) {
+  const auto& mesh = std::get<TriangleMesh>(world.geometry.shape(l.object));
   const auto solid = rect_solid_angle(l, ref.p);
   Vec2 st = u;  // the point's fractions of the edges
   if (solid) {
@@ -122,12 +121,12 @@ std::optional<LightSample> sample_rect(const RenderScene& scene, const RectAreaL
   on_light.object = l.object;
   const float pdf = solid ? float(1.0 / solid->solid_angle)
                           : area_to_solid_angle(1.f / (l.width * l.height), ref.p, on_light);
-  return surface_sample(scene, ref, l.object, on_light, pdf);
+  return surface_sample(world, ref, l.object, on_light, pdf);
 }
 
-std::optional<LightSample> sample_sphere(const RenderScene& scene, const SphereAreaLight& l,
+std::optional<LightSample> sample_sphere(const World& world, const SphereAreaLight& l,
                                          const LightReference& ref, Vec2 u) {
-  const auto& sphere = std::get<Sphere>(scene.geometry.shape(l.object));
+  const auto& sphere = std::get<Sphere>(world.geometry.shape(l.object));
   const float cos_max = sphere_cos_max(l, ref.p);
   Vec3 dir_to_point;  // from the centre, in world space
   float pdf = 0.f;
@@ -154,7 +153,7 @@ std::optional<LightSample> sample_sphere(const RenderScene& scene, const SphereA
   SurfaceInteraction on_light = sphere.interaction(probe, 1.f);
   on_light.object = l.object;
   if (cos_max <= 0.f) pdf = area_to_solid_angle(1.f / (4.f * kPi * l.radius * l.radius), ref.p, on_light);
-  return surface_sample(scene, ref, l.object, on_light, pdf);
+  return surface_sample(world, ref, l.object, on_light, pdf);
 }
 
 std::optional<LightSample> sample_environment(const EnvironmentLight& env, const LightReference& ref,
@@ -191,8 +190,8 @@ float solid_angle_pdf(const EnvironmentLight&, const LightReference&, const Surf
 
 }  // namespace
 
-std::optional<LightSample> sample_light(const RenderScene& scene, const Light& light,
-                                        const LightReference& ref, Vec2 u) {
+std::optional<LightSample> sample_light(const World& world, const Light& light, const LightReference& ref,
+                                        Vec2 u) {
   return std::visit(
       [&](const auto& l) -> std::optional<LightSample> {
         using T = std::decay_t<decltype(l)>;
@@ -216,11 +215,11 @@ std::optional<LightSample> sample_light(const RenderScene& scene, const Light& l
           s.shadow_t_max = kInfinity;
           return s;
         } else if constexpr (std::is_same_v<T, MeshAreaLight>) {
-          return sample_mesh(scene, l, ref, u);
+          return sample_mesh(world, l, ref, u);
         } else if constexpr (std::is_same_v<T, RectAreaLight>) {
-          return sample_rect(scene, l, ref, u);
+          return sample_rect(world, l, ref, u);
         } else if constexpr (std::is_same_v<T, SphereAreaLight>) {
-          return sample_sphere(scene, l, ref, u);
+          return sample_sphere(world, l, ref, u);
         } else {
           static_assert(std::is_same_v<T, EnvironmentLight>, "a kind of light sample_light does not handle");
           return sample_environment(l, ref, u);
@@ -229,8 +228,8 @@ std::optional<LightSample> sample_light(const RenderScene& scene, const Light& l
       light);
 }
 
-float light_pdf(const RenderScene& /*scene*/, const Light& light, const LightReference& ref,
-                const Vec3& /*wi*/, const SurfaceInteraction& on_light) {
+float light_pdf(const World& /*world*/, const Light& light, const LightReference& ref, const Vec3& /*wi*/,
+                const SurfaceInteraction& on_light) {
   return std::visit(
       [&](const auto& l) -> float {
         if constexpr (LightTraits<std::decay_t<decltype(l)>>::delta) {
@@ -242,7 +241,7 @@ float light_pdf(const RenderScene& /*scene*/, const Light& light, const LightRef
       light);
 }
 
-float light_power(const RenderScene& scene, const Light& light) {
+float light_power(const World& world, const Light& light) {
   return std::visit(
       [&](const auto& l) -> float {
         using T = std::decay_t<decltype(l)>;
@@ -254,7 +253,7 @@ float light_power(const RenderScene& scene, const Light& light) {
           return kPi * sqr(l.scene_radius) * luminance(l.irradiance);
         } else if constexpr (std::is_same_v<T, MeshAreaLight> || std::is_same_v<T, RectAreaLight> ||
                              std::is_same_v<T, SphereAreaLight>) {
-          const Material& m = scene.material_of(l.object);
+          const Material& m = world.material_of(l.object);
           const bool two_sided = std::get<EmissiveMaterial>(m).two_sided;
           float area = 0.f;
           if constexpr (std::is_same_v<T, MeshAreaLight>)

@@ -3,17 +3,17 @@
 #pragma once
 
 #include "core/lights/light.h"
-#include "core/world/render_scene.h"
+#include "core/world/world.h"
 
 namespace inkray {
 
-std::optional<LightSample> sample_light(const RenderScene& scene, const Light& light,
-                                        const LightReference& ref, Vec2 u);
+std::optional<LightSample> sample_light(const World& world, const Light& light, const LightReference& ref,
+                                        Vec2 u);
 // Solid-angle pdf that sample_light would produce direction wi hitting `on_light`
 // (ignored for the environment). Zero for delta lights.
-float light_pdf(const RenderScene& scene, const Light& light, const LightReference& ref, const Vec3& wi,
+float light_pdf(const World& world, const Light& light, const LightReference& ref, const Vec3& wi,
                 const SurfaceInteraction& on_light);
 // Estimated emitted power (luminance), the weight for choosing among lights.
-float light_power(const RenderScene& scene, const Light& light);
+float light_power(const World& world, const Light& light);
 
 }  // namespace inkray

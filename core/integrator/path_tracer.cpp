@@ -38,7 +38,7 @@ struct PathState {
 
 void record_first_hit(const RenderScene& scene, const Camera& camera, const SurfaceInteraction& si,
                       const Material& resolved, FirstHit* out) {
-  const RenderObject& obj = scene.objects[si.object];
+  const RenderObject& obj = scene.world->objects[si.object];
   out->object = int(obj.source);
   out->material = int(obj.material);            // a mix keeps its own id, so material lines do not flicker
   out->albedo = material_albedo(resolved, si);  // a mix's side per sample: averages to the blend
@@ -50,17 +50,18 @@ void record_first_hit(const RenderScene& scene, const Camera& camera, const Surf
 float emitter_weight(const RenderScene& scene, int light, const PathState& st, const Vec3& dir,
                      const SurfaceInteraction& on_light) {
   if (st.after_delta || light < 0) return 1.f;
-  const float pdf = scene.light_selection.pmf(size_t(light)) *
-                    light_pdf(scene, scene.lights[size_t(light)], st.prev_ref, dir, on_light);
+  const float pdf = scene.world->light_selection.pmf(size_t(light)) *
+                    light_pdf(*scene.world, scene.world->lights[size_t(light)], st.prev_ref, dir, on_light);
   return power_heuristic(st.prev_pdf, pdf);
 }
 
 void add_escaped(const RenderScene& scene, const PathState& st, PathResult& result) {
-  if (st.skip_lights && scene.environment_light >= 0) return;
-  const Color le = scene.environment.radiance(st.ray.d);
+  if (st.skip_lights && scene.world->environment_light >= 0) return;
+  const Color le = scene.world->environment.radiance(st.ray.d);
   if (is_black(le)) return;
   const SurfaceInteraction nowhere;
-  result.radiance += st.beta * le * emitter_weight(scene, scene.environment_light, st, st.ray.d, nowhere);
+  result.radiance +=
+      st.beta * le * emitter_weight(scene, scene.world->environment_light, st, st.ray.d, nowhere);
 }
 
 // Next-event estimation: one light chosen by power, MIS-weighted against the BSDF.
@@ -70,15 +71,15 @@ void add_direct_light(const RenderScene& scene, const Bsdf& bsdf, const Frame& f
                       const LightReference& ref, float u_light, Vec2 u_position, const PathState& st,
                       PathResult& result) {
   float pmf = 0.f;
-  const size_t li = scene.light_selection.sample(u_light, &pmf);
-  auto ls = sample_light(scene, scene.lights[li], ref, u_position);
+  const size_t li = scene.world->light_selection.sample(u_light, &pmf);
+  auto ls = sample_light(*scene.world, scene.world->lights[li], ref, u_position);
   if (!ls) return;
   const Vec3 wi_local = frame.to_local(ls->wi);
   const Color f = bsdf_eval(bsdf, wo_local, wi_local) * std::abs(wi_local.z);
   if (is_black(f)) return;
   ++result.rays;
   ls->shadow_ray.time = st.ray.time;
-  if (scene.geometry.occluded(ls->shadow_ray, ls->shadow_t_max)) return;
+  if (scene.world->geometry.occluded(ls->shadow_ray, ls->shadow_t_max)) return;
   const float light_pdf_total = pmf * ls->pdf;
   const float w = ls->is_delta ? 1.f : power_heuristic(light_pdf_total, bsdf_pdf(bsdf, wo_local, wi_local));
   result.radiance += st.beta * f * ls->radiance * (w / light_pdf_total);
@@ -122,7 +123,7 @@ struct Bounce {
 // Emission of the emitter the path ended on, weighted against light sampling.
 void add_emission(const RenderScene& scene, const Bounce& b, const Material& material, bool skip_lights,
                   const PathState& st, PathResult& result) {
-  const int light = scene.objects[b.si.object].light;
+  const int light = scene.world->objects[b.si.object].light;
   const Color le = material_emission(material, b.si, glm::dot(b.wo, b.si.ng));
   if (!is_black(le) && !(skip_lights && light >= 0))
     result.radiance += st.beta * le * emitter_weight(scene, light, st, st.ray.d, b.si);
@@ -137,7 +138,7 @@ bool continue_by_bsdf(const RenderScene& scene, const Sampler& sampler, const Bo
   const Vec2 u_choice = sampler.get_pair(b.pairs);  // x: which light, y: which lobe
   const Frame frame = Frame::from_z(b.ns);
   const Vec3 wo_local = frame.to_local(b.wo);
-  if (!scene.light_selection.empty() && !bsdf_is_delta(*bsdf))
+  if (!scene.world->light_selection.empty() && !bsdf_is_delta(*bsdf))
     add_direct_light(scene, *bsdf, frame, wo_local, b.ref, u_choice.x, sampler.get_pair(b.pairs + 1), st,
                      result);
   return scatter(sampler, *bsdf, frame, wo_local, b.si, b.ref, u_choice.y, sampler.get_pair(b.pairs + 2),
@@ -179,12 +180,12 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
     Hit hit;
     ++result.rays;
     // After a diffuse or glossy bounce the ray gathers indirect light, which may skip paint.
-    if (!scene.geometry.intersect(st.ray, kInfinity, &hit,
-                                  st.specular_chain ? RayKind::camera : RayKind::indirect)) {
+    if (!scene.world->geometry.intersect(st.ray, kInfinity, &hit,
+                                         st.specular_chain ? RayKind::camera : RayKind::indirect)) {
       add_escaped(scene, st, result);
       break;
     }
-    const SurfaceInteraction si = scene.geometry.interaction(st.ray, hit);
+    const SurfaceInteraction si = scene.world->geometry.interaction(st.ray, hit);
     const Vec3 wo = -glm::normalize(st.ray.d);
     st.path_length += hit.t * glm::length(st.ray.d);
     if (depth == 0 && primary) *primary = {true, si, st.path_length};
@@ -192,15 +193,15 @@ PathResult trace_path(const RenderScene& scene, const Camera& camera, const Ray&
     const bool skip_lights = std::exchange(st.skip_lights, false);
 
     // Mixes and graphs decide per sample which surface this is (material.h).
-    const uint32_t material_index = scene.objects[si.object].material;
-    const Material* chosen = &scene.materials[material_index];
+    const uint32_t material_index = scene.world->objects[si.object].material;
+    const Material* chosen = &scene.world->materials[material_index];
     Material scratch;
     if (material_flags(*chosen).resolves) {
       ShadingPoint sp = scene_shading_point(scene, si, wo, st.path_length);
-      if (material_uses_light(scene.materials, material_index))
+      if (material_uses_light(scene.world->materials, material_index))
         gather_light_inputs(scene, LightReference{si.p, si.p_error, sp.ng}, si.time, sp, &result.rays);
-      const ResolvedMaterial r =
-          resolve_material(scene.materials, material_index, sp, sampler.get_pair(pairs + 3).x, scratch);
+      const ResolvedMaterial r = resolve_material(scene.world->materials, material_index, sp,
+                                                  sampler.get_pair(pairs + 3).x, scratch);
       if (!r.material) break;
       chosen = r.material;
       st.beta *= r.weight;

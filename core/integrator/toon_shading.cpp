@@ -92,7 +92,7 @@ LightTerm environment_term(const RenderScene& scene, const EnvironmentLight& env
     ++*rays;
     Ray shadow = spawn_ray(hit.ref.p, hit.ref.p_error, hit.ref.n, wi);
     shadow.time = hit.si->time;
-    if (scene.geometry.occluded(shadow, kInfinity)) return t;
+    if (scene.world->geometry.occluded(shadow, kInfinity)) return t;
   }
   t.received = m.environment * glm::max(sky_irradiance(env, hit.ns.y), Color(0.f));
   return t;
@@ -103,7 +103,7 @@ LightTerm environment_term(const RenderScene& scene, const EnvironmentLight& env
 LightTerm sampled_term(const RenderScene& scene, const Light& light, const ToonHit& hit, Vec2 u,
                        uint32_t* rays, std::optional<Color> reference) {
   LightTerm t;
-  auto ls = sample_light(scene, light, hit.ref, u);
+  auto ls = sample_light(*scene.world, light, hit.ref, u);
   if (reference) {
     t.reference = *reference;
   } else if (ls) {
@@ -115,7 +115,7 @@ LightTerm sampled_term(const RenderScene& scene, const Light& light, const ToonH
   if (!(cos_n > 0.f) || !(glm::dot(hit.ref.n, ls->wi) > 0.f)) return t;
   ++*rays;
   ls->shadow_ray.time = hit.si->time;  // lights stand at the frame; the rest at the hit's instant
-  if (scene.geometry.occluded(ls->shadow_ray, ls->shadow_t_max)) return t;
+  if (scene.world->geometry.occluded(ls->shadow_ray, ls->shadow_t_max)) return t;
   t.wi = ls->wi;
   t.received = (ls->radiance / ls->pdf) * cos_n;
   t.highlight = true;
@@ -169,8 +169,8 @@ ToonShade toon_shade(const RenderScene& scene, const ToonMaterial& m, const Toon
   float reference_max = 0.f;
   float received = 0.f;
   Color tint_sum(0.f);
-  for (size_t l = 0; l < scene.lights.size(); ++l) {
-    const Light& light = scene.lights[l];
+  for (size_t l = 0; l < scene.world->lights.size(); ++l) {
+    const Light& light = scene.world->lights[l];
     const bool sampled = std::holds_alternative<MeshAreaLight>(light) ||
                          std::holds_alternative<RectAreaLight>(light) ||
                          std::holds_alternative<SphereAreaLight>(light) ||

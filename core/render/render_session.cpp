@@ -43,9 +43,9 @@ CameraSample camera_sample(const RenderScene& scene, const Sampler& sampler, int
 PrimaryHit camera_hit(const RenderScene& scene, const Ray& ray) {
   PrimaryHit primary;
   Hit hit;
-  if (!scene.geometry.intersect(ray, kInfinity, &hit, RayKind::camera)) return primary;
+  if (!scene.world->geometry.intersect(ray, kInfinity, &hit, RayKind::camera)) return primary;
   primary.hit = true;
-  primary.si = scene.geometry.interaction(ray, hit);
+  primary.si = scene.world->geometry.interaction(ray, hit);
   primary.distance = 0.f + hit.t * glm::length(ray.d);
   return primary;
 }

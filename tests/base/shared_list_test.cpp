@@ -24,7 +24,8 @@ size_t shared_items(const SharedList<std::string>& a, const SharedList<std::stri
 
 TEST(SharedList, ACopySharesEveryItem) {
   const SharedList<std::string> a = numbered(300);
-  const SharedList<std::string> b = a;  // NOLINT(performance-unnecessary-copy-initialization): the copy is the test
+  const SharedList<std::string> b =
+      a;  // NOLINT(performance-unnecessary-copy-initialization): the copy is the test
   EXPECT_EQ(shared_items(a, b), 300u);
   EXPECT_EQ(a, b);
 }

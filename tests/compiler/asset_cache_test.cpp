@@ -95,7 +95,7 @@ TEST(AssetCache, AFileChangedOnDiskIsReadAgain) {
   ASSERT_TRUE(result.scene);
   ASSERT_EQ(c.opened.size(), 1u);
   EXPECT_EQ(c.opened[0].filename(), "cube.obj");
-  EXPECT_EQ(std::get<TriangleMesh>(result.scene->geometry.shape(0)).triangle_count(), 1u);
+  EXPECT_EQ(std::get<TriangleMesh>(result.scene->world->geometry.shape(0)).triangle_count(), 1u);
 }
 
 TEST(AssetCache, ACancelledCompileKeepsWhatTheLastOneRead) {

@@ -44,7 +44,7 @@ template <class D>
 Material compiled(const D& desc) {
   SceneDesc scene;
   scene.materials.push_back({"m", desc, {}});
-  RenderScene out;
+  World out;
   std::vector<std::string> errors;
   AssetCache assets;
   std::vector<std::vector<std::string>> keys;

@@ -148,7 +148,7 @@ TEST(GraphInputs, AnUnlinkedClosureInputIsTheNodesOwnValue) {
       plain.materials[0].data = T{};
       const CompileResult compiled = compile_scene(plain);
       ASSERT_TRUE(compiled.scene) << T::type_name;
-      EXPECT_EQ(resolved_numbers(*c.program), material_numbers(compiled.scene->materials.at(0)))
+      EXPECT_EQ(resolved_numbers(*c.program), material_numbers(compiled.scene->world->materials.at(0)))
           << T::type_name;
     }
   });

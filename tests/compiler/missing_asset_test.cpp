@@ -49,14 +49,14 @@ bool any_line_has(const std::vector<std::string>& lines, const std::string& a, c
 }
 
 size_t object_index(const RenderScene& scene, const std::string& name) {
-  for (size_t i = 0; i < scene.objects.size(); ++i)
-    if (scene.objects[i].name == name) return i;
+  for (size_t i = 0; i < scene.world->objects.size(); ++i)
+    if (scene.world->objects[i].name == name) return i;
   ADD_FAILURE() << "no compiled object " << name;
   return 0;
 }
 
 const TriangleMesh& object_mesh(const RenderScene& scene, const std::string& name) {
-  return std::get<TriangleMesh>(scene.geometry.shape(uint32_t(object_index(scene, name))));
+  return std::get<TriangleMesh>(scene.world->geometry.shape(uint32_t(object_index(scene, name))));
 }
 
 void mesh_bounds(const TriangleMesh& mesh, Point3* lo, Point3* hi) {
@@ -70,7 +70,7 @@ void mesh_bounds(const TriangleMesh& mesh, Point3* lo, Point3* hi) {
 
 // The floor material's texture as compiled.
 const ImageTexture& floor_texture(const RenderScene& scene) {
-  const auto& m = std::get<DiffuseMaterial>(scene.materials[0]);
+  const auto& m = std::get<DiffuseMaterial>(scene.world->materials[0]);
   return std::get<ImageTexture>(m.albedo);
 }
 
@@ -223,8 +223,8 @@ TEST(MissingAssets, AMissingBrushPaintsTheStrokesInTheChecker) {
   const CompileResult c = compile_scene(scene, with_stand_ins());
   ASSERT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
   EXPECT_TRUE(any_line_has(c.warnings, "palette_knife.png", "stroke emitter \"knot_strokes\""));
-  const RenderObject& strokes = c.scene->objects[object_index(*c.scene, "knot_strokes")];
-  const auto* unlit = std::get_if<UnlitMaterial>(&c.scene->materials[strokes.material]);
+  const RenderObject& strokes = c.scene->world->objects[object_index(*c.scene, "knot_strokes")];
+  const auto* unlit = std::get_if<UnlitMaterial>(&c.scene->world->materials[strokes.material]);
   ASSERT_TRUE(unlit);
   const auto* checker = std::get_if<CheckerTexture>(&unlit->color);
   ASSERT_TRUE(checker);
@@ -244,8 +244,8 @@ TEST(MissingAssets, ARelinkedBrushPaintsTheStrokesAgain) {
   EXPECT_EQ(scene.strokes[0].brush_image, "palette_knife.png");
   const CompileResult c = compiler.compile(scene, with_stand_ins());
   ASSERT_TRUE(c.scene);
-  const RenderObject& strokes = c.scene->objects[object_index(*c.scene, "knot_strokes")];
-  EXPECT_TRUE(std::holds_alternative<DiffuseMaterial>(c.scene->materials[strokes.material]));
+  const RenderObject& strokes = c.scene->world->objects[object_index(*c.scene, "knot_strokes")];
+  EXPECT_TRUE(std::holds_alternative<DiffuseMaterial>(c.scene->world->materials[strokes.material]));
 }
 
 }  // namespace

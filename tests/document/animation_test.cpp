@@ -287,8 +287,8 @@ TEST(AnimationCompile, TheCompilerRendersTheCurrentFrame) {
   d.render.frame = 3;
   const CompileResult b = compiler.compile(d);
   ASSERT_TRUE(b.scene) << joined(b.errors);
-  EXPECT_NEAR(a.scene->scene_center.x, 0.f, 1e-4f);
-  EXPECT_NEAR(b.scene->scene_center.x, 5.f, 1e-4f);
+  EXPECT_NEAR(a.scene->world->scene_center.x, 0.f, 1e-4f);
+  EXPECT_NEAR(b.scene->world->scene_center.x, 5.f, 1e-4f);
   EXPECT_TRUE(b.changes.has(Stage::object));
   EXPECT_FALSE(b.changes.has(Stage::material)) << "a frame step changes what moved and nothing else";
 }
@@ -300,8 +300,8 @@ TEST(AnimationCompile, StrokesMoveWithTheirObjectAndKeepTheirPlaces) {
   d.animation.push_back({"objects/ball/transform/translate", {key(1, {0, 0, 0}), key(5, {2, 1, 0})}});
   d.animation.push_back({"objects/ball/transform/rotate/0/degrees", {key(1, {10}), key(5, {100})}});
   const auto stroke_mesh = [](const RenderScene& s) {
-    for (uint32_t i = 0; i < s.objects.size(); ++i)
-      if (s.objects[i].name == "paint") return std::get<TriangleMesh>(s.geometry.shape(i));
+    for (uint32_t i = 0; i < s.world->objects.size(); ++i)
+      if (s.world->objects[i].name == "paint") return std::get<TriangleMesh>(s.world->geometry.shape(i));
     ADD_FAILURE() << "no strokes";
     return TriangleMesh{};
   };

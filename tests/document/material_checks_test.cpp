@@ -134,7 +134,7 @@ TEST(SceneJsonMaterialChecks, ToonRampImageIsCheckedAndLoaded) {
   d.base_dir = dir.path;
   const CompileResult compiled = compile_scene(d);
   ASSERT_TRUE(compiled.scene);
-  const auto& m = std::get<ToonMaterial>(compiled.scene->materials[1]);
+  const auto& m = std::get<ToonMaterial>(compiled.scene->world->materials[1]);
   ASSERT_TRUE(m.ramp_image);
   EXPECT_EQ(m.ramp_image->width, 4);
   EXPECT_EQ(m.ramp_axis, ToonRampAxis::facing);
@@ -152,10 +152,10 @@ TEST(SceneJsonMaterialChecks, ToonAndMixLoadFromJson) {
   ASSERT_TRUE(r) << joined(r.errors);
   const CompileResult compiled = compile_scene(*r.scene);
   ASSERT_TRUE(compiled.scene);
-  const auto& blend = std::get<MixMaterial>(compiled.scene->materials[0]);
+  const auto& blend = std::get<MixMaterial>(compiled.scene->world->materials[0]);
   EXPECT_EQ(blend.a, 1u);
   EXPECT_EQ(blend.b, 2u);
-  const auto& cel = std::get<ToonMaterial>(compiled.scene->materials[1]);
+  const auto& cel = std::get<ToonMaterial>(compiled.scene->world->materials[1]);
   EXPECT_EQ(cel.bands, 3);
   EXPECT_TRUE(cel.rim);
   EXPECT_EQ(cel.ramp->size(), 2u);

@@ -42,7 +42,7 @@ SceneDesc mesh_scene(const std::string& path, float smooth_angle = 30.f) {
 }
 
 const TriangleMesh& mesh_of(const RenderScene& scene, size_t object) {
-  return std::get<TriangleMesh>(scene.geometry.shape(uint32_t(object)));
+  return std::get<TriangleMesh>(scene.world->geometry.shape(uint32_t(object)));
 }
 
 size_t distinct(const std::vector<uint32_t>& ids) {
@@ -176,7 +176,7 @@ SceneDesc crease_scene(float threshold) {
 // Patch ids of the triangle a ray from `from` towards `to` hits first.
 uint32_t patch_seen(const RenderScene& scene, const Point3& from, const Point3& to, uint32_t* object) {
   Hit hit;
-  EXPECT_TRUE(scene.geometry.intersect(Ray{from, glm::normalize(to - from)}, 100.f, &hit));
+  EXPECT_TRUE(scene.world->geometry.intersect(Ray{from, glm::normalize(to - from)}, 100.f, &hit));
   *object = hit.geometry;
   return crease_patch(scene, hit.geometry, hit.prim);
 }
@@ -185,15 +185,16 @@ TEST(CreasePatches, CompiledPerObject) {
   const CompileResult c = compile_scene(crease_scene(30.f));
   ASSERT_TRUE(c.scene) << joined(c.errors);
   const RenderScene& s = *c.scene;
-  ASSERT_EQ(s.objects.size(), 4u);
-  ASSERT_TRUE(s.objects[0].crease_patches);
-  EXPECT_EQ(distinct(*s.objects[0].crease_patches), 26u);
-  EXPECT_EQ(s.objects[0].crease_patches->size(), mesh_of(s, 0).triangle_count());
-  EXPECT_EQ(s.objects[0].crease_patches, s.objects[1].crease_patches) << "one mesh, one threshold: shared";
-  EXPECT_FALSE(s.objects[2].crease_patches) << "a sphere has no patches";
+  ASSERT_EQ(s.world->objects.size(), 4u);
+  ASSERT_TRUE(s.world->objects[0].crease_patches);
+  EXPECT_EQ(distinct(*s.world->objects[0].crease_patches), 26u);
+  EXPECT_EQ(s.world->objects[0].crease_patches->size(), mesh_of(s, 0).triangle_count());
+  EXPECT_EQ(s.world->objects[0].crease_patches, s.world->objects[1].crease_patches)
+      << "one mesh, one threshold: shared";
+  EXPECT_FALSE(s.world->objects[2].crease_patches) << "a sphere has no patches";
   EXPECT_EQ(crease_patch(s, 2, 0), kNoPatch);
-  ASSERT_TRUE(s.objects[3].crease_patches);
-  EXPECT_EQ(distinct(*s.objects[3].crease_patches), 6u) << "a box's faces";
+  ASSERT_TRUE(s.world->objects[3].crease_patches);
+  EXPECT_EQ(distinct(*s.world->objects[3].crease_patches), 6u) << "a box's faces";
 
   // What the line detector asks: hits on a face and on the chamfer beside it.
   uint32_t object_a = 0, object_b = 0;
@@ -226,19 +227,19 @@ TEST(CreasePatches, FollowTheThresholdWithoutRebuildingTheWorld) {
     EXPECT_EQ(reads, 1);
     const CompileResult fresh = compile_scene(doc);
     ASSERT_TRUE(fresh.scene);
-    for (size_t i = 0; i < c.scene->objects.size(); ++i) {
-      const auto& a = c.scene->objects[i].crease_patches;
-      const auto& b = fresh.scene->objects[i].crease_patches;
+    for (size_t i = 0; i < c.scene->world->objects.size(); ++i) {
+      const auto& a = c.scene->world->objects[i].crease_patches;
+      const auto& b = fresh.scene->world->objects[i].crease_patches;
       ASSERT_EQ(bool(a), bool(b)) << i;
       if (a) {
         EXPECT_EQ(*a, *b) << "object " << i << ": an edit gives other patches than a compile from scratch";
       }
     }
     if (cube_patches == 0) {
-      EXPECT_FALSE(c.scene->objects[0].crease_patches);
+      EXPECT_FALSE(c.scene->world->objects[0].crease_patches);
     } else {
-      ASSERT_TRUE(c.scene->objects[0].crease_patches);
-      EXPECT_EQ(distinct(*c.scene->objects[0].crease_patches), cube_patches);
+      ASSERT_TRUE(c.scene->world->objects[0].crease_patches);
+      EXPECT_EQ(distinct(*c.scene->world->objects[0].crease_patches), cube_patches);
     }
   };
   d.outlines.crease.threshold = 60.f;
@@ -262,10 +263,10 @@ TEST(CreasePatches, NonUniformScaleMeasuresAnglesInTheWorld) {
   const TriangleMesh& world = mesh_of(*c.scene, 0);
   const std::vector<uint32_t> expected = smooth_patches(
       find_feature_edges(std::span(world.positions.data(), world.vertex_count()), world.indices), 40.f);
-  ASSERT_TRUE(c.scene->objects[0].crease_patches);
-  EXPECT_EQ(*c.scene->objects[0].crease_patches, expected);
+  ASSERT_TRUE(c.scene->world->objects[0].crease_patches);
+  EXPECT_EQ(*c.scene->world->objects[0].crease_patches, expected);
   EXPECT_NE(distinct(expected), 7u) << "stretched, some chamfers lie within 40 degrees of a face";
-  EXPECT_EQ(distinct(*c.scene->objects[1].crease_patches), 7u) << "the unscaled twin";
+  EXPECT_EQ(distinct(*c.scene->world->objects[1].crease_patches), 7u) << "the unscaled twin";
 }
 
 TEST(CreasePatches, StrokesHaveNone) {
@@ -273,9 +274,9 @@ TEST(CreasePatches, StrokesHaveNone) {
   d.strokes.push_back(StrokeEmitterDesc{.name = "paint", .object = "mesh", .count = 40});
   const CompileResult c = compile_scene(d);
   ASSERT_TRUE(c.scene) << joined(c.errors);
-  ASSERT_EQ(c.scene->objects.size(), 5u);
-  EXPECT_TRUE(c.scene->objects[0].crease_patches);
-  EXPECT_FALSE(c.scene->objects[4].crease_patches) << "the strokes copied their base object's patches";
+  ASSERT_EQ(c.scene->world->objects.size(), 5u);
+  EXPECT_TRUE(c.scene->world->objects[0].crease_patches);
+  EXPECT_FALSE(c.scene->world->objects[4].crease_patches) << "the strokes copied their base object's patches";
   EXPECT_EQ(crease_patch(*c.scene, 4, 0), kNoPatch);
 }
 

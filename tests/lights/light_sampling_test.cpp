@@ -55,8 +55,8 @@ Vec2 grid_sample(int i, int j, Pcg32& rng) {
 std::optional<SurfaceInteraction> trace(const RenderScene& scene, const Point3& from, const Vec3& wi) {
   const Ray ray{from, wi};
   Hit hit;
-  if (!scene.geometry.intersect(ray, kInfinity, &hit)) return std::nullopt;
-  return scene.geometry.interaction(ray, hit);
+  if (!scene.world->geometry.intersect(ray, kInfinity, &hit)) return std::nullopt;
+  return scene.world->geometry.interaction(ray, hit);
 }
 
 void expect_color_near(const Color& got, const Color& want, float relative) {
@@ -72,12 +72,12 @@ TEST(LightSampling, PointLightFollowsInverseSquare) {
   const Point3 position(1.f, 2.f, -2.f);  // distance 3 from the origin
   const auto scene = compile(with_lights({{"bulb", PointLightDesc{position, color, intensity}}}));
   ASSERT_TRUE(scene);
-  ASSERT_EQ(scene->lights.size(), 1u);
-  const Light& light = scene->lights[0];
+  ASSERT_EQ(scene->world->lights.size(), 1u);
+  const Light& light = scene->world->lights[0];
   ASSERT_TRUE(std::holds_alternative<PointLight>(light));
   const LightReference ref = origin_facing_up();
 
-  const auto s = sample_light(*scene, light, ref, Vec2(0.3f, 0.6f));
+  const auto s = sample_light(*scene->world, light, ref, Vec2(0.3f, 0.6f));
   ASSERT_TRUE(s);
   EXPECT_TRUE(s->is_delta);
   EXPECT_EQ(s->pdf, 1.f);
@@ -87,11 +87,11 @@ TEST(LightSampling, PointLightFollowsInverseSquare) {
   EXPECT_NEAR(glm::length(s->shadow_ray.o + s->shadow_ray.d - position), 0.f, 1e-5f);
   EXPECT_LE(s->shadow_t_max, 1.f);
   // No other technique reaches a delta light.
-  EXPECT_EQ(light_pdf(*scene, light, ref, s->wi, SurfaceInteraction{}), 0.f);
+  EXPECT_EQ(light_pdf(*scene->world, light, ref, s->wi, SurfaceInteraction{}), 0.f);
 
   // Twice as far, a quarter of the light.
   const LightReference far{-position, Vec3(0.f), Normal3(0.f, 1.f, 0.f)};
-  const auto s2 = sample_light(*scene, light, far, Vec2(0.5f));
+  const auto s2 = sample_light(*scene->world, light, far, Vec2(0.5f));
   ASSERT_TRUE(s2);
   expect_color_near(s2->radiance, 0.25f * s->radiance, 1e-5f);
 }
@@ -103,14 +103,15 @@ TEST(LightSampling, SpotLightFallsOffBetweenItsAngles) {
   const auto scene = compile(with_lights(
       {{"spot", SpotLightDesc{{0.f, height, 0.f}, {0.f, 0.f, 0.f}, Color(1.f), intensity, cone, falloff}}}));
   ASSERT_TRUE(scene);
-  const Light& light = scene->lights[0];
+  const Light& light = scene->world->lights[0];
   ASSERT_TRUE(std::holds_alternative<SpotLight>(light));
   const float cos_total = std::cos(glm::radians(cone)), cos_falloff = std::cos(glm::radians(falloff));
 
   // A receiver on the floor at `degrees` off the spot's axis.
   const auto at_angle = [&](float degrees) {
     const float x = height * std::tan(glm::radians(degrees));
-    return sample_light(*scene, light, {Point3(x, 0.f, 0.f), Vec3(0.f), Normal3(0.f, 1.f, 0.f)}, Vec2(0.5f));
+    return sample_light(*scene->world, light, {Point3(x, 0.f, 0.f), Vec3(0.f), Normal3(0.f, 1.f, 0.f)},
+                        Vec2(0.5f));
   };
   const auto expected = [&](float degrees) {
     const float d2 = sqr(height / std::cos(glm::radians(degrees)));
@@ -135,9 +136,11 @@ TEST(LightSampling, SpotLightFallsOffBetweenItsAngles) {
   }
   for (float degrees : {31.f, 45.f, 80.f}) EXPECT_FALSE(at_angle(degrees)) << degrees;
   // Behind the spot.
-  EXPECT_FALSE(sample_light(
-      *scene, light, {Point3(0.f, 2.f * height, 0.f), Vec3(0.f), Normal3(0.f, -1.f, 0.f)}, Vec2(0.5f)));
-  EXPECT_EQ(light_pdf(*scene, light, origin_facing_up(), Vec3(0.f, 1.f, 0.f), SurfaceInteraction{}), 0.f);
+  EXPECT_FALSE(sample_light(*scene->world, light,
+                            {Point3(0.f, 2.f * height, 0.f), Vec3(0.f), Normal3(0.f, -1.f, 0.f)},
+                            Vec2(0.5f)));
+  EXPECT_EQ(light_pdf(*scene->world, light, origin_facing_up(), Vec3(0.f, 1.f, 0.f), SurfaceInteraction{}),
+            0.f);
 }
 
 // A directional light's radiance field is its irradiance on a surface facing it;
@@ -148,10 +151,11 @@ TEST(LightSampling, DirectionalLightGivesItsIrradiance) {
   const float intensity = 3.f;
   const auto scene = compile(with_lights({{"sun", DirectionalLightDesc{travel, color, intensity}}}));
   ASSERT_TRUE(scene);
-  const Light& light = scene->lights[0];
+  const Light& light = scene->world->lights[0];
   ASSERT_TRUE(std::holds_alternative<DirectionalLight>(light));
   for (const Point3 p : {Point3(0.f), Point3(10.f, -3.f, 7.f)}) {
-    const auto s = sample_light(*scene, light, {p, Vec3(0.f), Normal3(0.f, 1.f, 0.f)}, Vec2(0.2f, 0.9f));
+    const auto s =
+        sample_light(*scene->world, light, {p, Vec3(0.f), Normal3(0.f, 1.f, 0.f)}, Vec2(0.2f, 0.9f));
     ASSERT_TRUE(s);
     EXPECT_TRUE(s->is_delta);
     EXPECT_EQ(s->pdf, 1.f);
@@ -161,7 +165,7 @@ TEST(LightSampling, DirectionalLightGivesItsIrradiance) {
     const float irradiance_up = s->radiance.g * glm::dot(Vec3(0.f, 1.f, 0.f), s->wi) / s->pdf;
     EXPECT_NEAR(irradiance_up, intensity * 2.f / glm::length(travel), 1e-5f);
   }
-  EXPECT_EQ(light_pdf(*scene, light, origin_facing_up(), -travel, SurfaceInteraction{}), 0.f);
+  EXPECT_EQ(light_pdf(*scene->world, light, origin_facing_up(), -travel, SurfaceInteraction{}), 0.f);
 }
 
 // ---------------------------------------------------------------- mesh area light
@@ -196,7 +200,7 @@ void sample_over_grid(
   Pcg32 rng(seed);
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
-      const auto s = sample_light(scene, light, ref, grid_sample(i, j, rng));
+      const auto s = sample_light(*scene.world, light, ref, grid_sample(i, j, rng));
       ASSERT_TRUE(s);
       check(*s);
       if (::testing::Test::HasFatalFailure()) return;
@@ -207,7 +211,7 @@ void sample_over_grid(
       ASSERT_TRUE(on_light);
       ASSERT_EQ(on_light->object, object);
       check_hit(*s, *on_light);
-      EXPECT_NEAR(light_pdf(scene, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
+      EXPECT_NEAR(light_pdf(*scene.world, light, ref, s->wi, *on_light), s->pdf, 1e-4f * s->pdf);
       ++out.checked_pdf;
     }
 }
@@ -225,7 +229,7 @@ double light_pdf_integral(const RenderScene& scene, const Light& light, uint64_t
     for (int j = 0; j < kGrid; ++j) {
       const Vec3 wi = direction(grid_sample(i, j, rng));
       const auto hit = trace(scene, ref.p, wi);
-      if (hit && on_light(*hit)) sum += light_pdf(scene, light, ref, wi, *hit) / pdf;
+      if (hit && on_light(*hit)) sum += light_pdf(*scene.world, light, ref, wi, *hit) / pdf;
     }
   return sum / double(kGrid * kGrid);
 }
@@ -244,12 +248,12 @@ TEST(LightSampling, RectAreaLightIsSampledUniformlyInSolidAngle) {
   const float a = 0.75f, h = 1.5f, le = 2.f;
   const auto scene = compile(square_lamp_scene(a, h, le));
   ASSERT_TRUE(scene);
-  ASSERT_EQ(scene->lights.size(), 1u);
-  const Light& light = scene->lights[0];
+  ASSERT_EQ(scene->world->lights.size(), 1u);
+  const Light& light = scene->world->lights[0];
   const auto* rect = std::get_if<RectAreaLight>(&light);
   ASSERT_TRUE(rect);
   EXPECT_NEAR(rect->width * rect->height, 4.f * a * a, 1e-5f);
-  EXPECT_EQ(scene->objects[rect->object].light, 0);
+  EXPECT_EQ(scene->world->objects[rect->object].light, 0);
   // The solid angle of a square seen from a point on its axis.
   const float solid_angle = 4.f * std::asin(a * a / (a * a + h * h));
 
@@ -272,15 +276,16 @@ TEST(LightSampling, RectAreaLightIsSampledUniformlyInSolidAngle) {
 
   // The emitter is one-sided: from above it sends nothing.
   const LightReference above{Point3(0.f, 2.f * h, 0.f), Vec3(0.f), Normal3(0.f, -1.f, 0.f)};
-  EXPECT_FALSE(sample_light(*scene, light, above, Vec2(0.4f, 0.4f)));
+  EXPECT_FALSE(sample_light(*scene->world, light, above, Vec2(0.4f, 0.4f)));
   // Seen from almost in its plane it subtends too little to sample by solid angle:
   // area sampling then, with light_pdf still agreeing.
   const LightReference edge_on{Point3(40.f, h - 0.001f, 0.f), Vec3(0.f), Normal3(-1.f, 0.f, 0.f)};
-  const auto grazing = sample_light(*scene, light, edge_on, Vec2(0.3f, 0.6f));
+  const auto grazing = sample_light(*scene->world, light, edge_on, Vec2(0.3f, 0.6f));
   ASSERT_TRUE(grazing);
   const auto hit = trace(*scene, edge_on.p, grazing->wi);
   ASSERT_TRUE(hit);
-  EXPECT_NEAR(light_pdf(*scene, light, edge_on, grazing->wi, *hit), grazing->pdf, 1e-3f * grazing->pdf);
+  EXPECT_NEAR(light_pdf(*scene->world, light, edge_on, grazing->wi, *hit), grazing->pdf,
+              1e-3f * grazing->pdf);
 }
 
 // A parallelogram is sampled by area: pdf = (1 / area) * dist^2 / cos.
@@ -288,13 +293,13 @@ TEST(LightSampling, MeshAreaLightPdfIsInverseAreaInSolidAngle) {
   const float a = 0.75f, h = 1.5f, le = 2.f;
   const auto scene = compile(square_lamp_scene(a, h, le, true));
   ASSERT_TRUE(scene);
-  ASSERT_EQ(scene->lights.size(), 1u);
-  const Light& light = scene->lights[0];
+  ASSERT_EQ(scene->world->lights.size(), 1u);
+  const Light& light = scene->world->lights[0];
   const auto* mesh = std::get_if<MeshAreaLight>(&light);
   ASSERT_TRUE(mesh);
   const float area = 4.f * a * a;
   EXPECT_NEAR(mesh->area, area, 1e-5f);
-  EXPECT_EQ(scene->objects[mesh->object].light, 0);
+  EXPECT_EQ(scene->world->objects[mesh->object].light, 0);
 
   GridEstimate grid;
   ASSERT_NO_FATAL_FAILURE(sample_over_grid(
@@ -315,13 +320,13 @@ TEST(LightSampling, AreaLightPdfIntegratesToOne) {
     const auto scene = compile(square_lamp_scene(1.f, 1.f, 1.f, sheared));
     ASSERT_TRUE(scene);
     const double integral = light_pdf_integral(
-        *scene, scene->lights[0], 11,
+        *scene, scene->world->lights[0], 11,
         [](Vec2 u) {
           const Vec3 h = sample_uniform_hemisphere(u);
           return Vec3(h.x, h.z, h.y);  // the hemisphere around +y
         },
         uniform_hemisphere_pdf(),
-        [&](const SurfaceInteraction& hit) { return scene->objects[hit.object].light == 0; });
+        [&](const SurfaceInteraction& hit) { return scene->world->objects[hit.object].light == 0; });
     EXPECT_NEAR(integral, 1.0, 0.01) << (sheared ? "parallelogram" : "rectangle");
   }
 }
@@ -340,8 +345,8 @@ TEST(LightSampling, SphereLightSamplesTheConeItSubtends) {
   const float r = 1.f, d = 2.5f, le = 3.f;
   const auto scene = compile(sphere_lamp_scene({0.f, d, 0.f}, r, le, false));
   ASSERT_TRUE(scene);
-  ASSERT_EQ(scene->lights.size(), 1u);
-  const Light& light = scene->lights[0];
+  ASSERT_EQ(scene->world->lights.size(), 1u);
+  const Light& light = scene->world->lights[0];
   const auto* sphere = std::get_if<SphereAreaLight>(&light);
   ASSERT_TRUE(sphere);
   const float cos_max = std::sqrt(1.f - sqr(r / d));
@@ -366,7 +371,7 @@ TEST(LightSampling, SphereLightSamplesTheConeItSubtends) {
 TEST(LightSampling, SphereLightPdfIntegratesToOneOverItsCone) {
   const auto scene = compile(sphere_lamp_scene({0.5f, 2.f, -0.5f}, 1.f, 1.f, false));
   ASSERT_TRUE(scene);
-  const Light& light = scene->lights[0];
+  const Light& light = scene->world->lights[0];
   const double integral = light_pdf_integral(
       *scene, light, 5, [](Vec2 u) { return sample_uniform_sphere(u); }, uniform_sphere_pdf(),
       [&](const SurfaceInteraction& hit) { return hit.object == std::get<SphereAreaLight>(light).object; });
@@ -380,14 +385,14 @@ TEST(LightSampling, SphereLightFromInside) {
   const float r = 2.f, le = 0.5f;
   const auto scene = compile(sphere_lamp_scene({0.f, 0.5f, 0.f}, r, le, true));
   ASSERT_TRUE(scene);
-  const Light& light = scene->lights[0];
+  const Light& light = scene->world->lights[0];
   const uint32_t object = std::get<SphereAreaLight>(light).object;
   const LightReference ref = origin_facing_up();
   Pcg32 rng(9);
   double irradiance = 0.0, pdf_sum = 0.0;
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
-      const auto s = sample_light(*scene, light, ref, grid_sample(i, j, rng));
+      const auto s = sample_light(*scene->world, light, ref, grid_sample(i, j, rng));
       ASSERT_TRUE(s);
       expect_color_near(s->radiance, Color(le), 1e-6f);
       irradiance += double(s->radiance.g * std::max(0.f, s->wi.y) / s->pdf);
@@ -395,12 +400,12 @@ TEST(LightSampling, SphereLightFromInside) {
         const auto on_light = trace(*scene, ref.p, s->wi);
         ASSERT_TRUE(on_light);
         ASSERT_EQ(on_light->object, object);
-        EXPECT_NEAR(light_pdf(*scene, light, ref, s->wi, *on_light), s->pdf, 1e-3f * s->pdf);
+        EXPECT_NEAR(light_pdf(*scene->world, light, ref, s->wi, *on_light), s->pdf, 1e-3f * s->pdf);
       }
       const Vec3 wi = sample_uniform_sphere(grid_sample(i, j, rng));
       const auto on_light = trace(*scene, ref.p, wi);
       ASSERT_TRUE(on_light);
-      pdf_sum += light_pdf(*scene, light, ref, wi, *on_light) / uniform_sphere_pdf();
+      pdf_sum += light_pdf(*scene->world, light, ref, wi, *on_light) / uniform_sphere_pdf();
     }
   EXPECT_NEAR(pdf_sum / double(kGrid * kGrid), 1.0, 0.01);
   EXPECT_NEAR(irradiance / double(kGrid * kGrid), kPi * le, 0.01 * kPi * le);
@@ -413,19 +418,19 @@ TEST(LightSampling, EnvironmentIsSampledUniformly) {
   d.environment = GradientEnvironmentDesc{Color(0.2f, 0.4f, 1.f), Color(1.f), Color(0.1f)};
   const auto scene = compile(d);
   ASSERT_TRUE(scene);
-  ASSERT_EQ(scene->environment_light, 0);
-  const Light& light = scene->lights[0];
+  ASSERT_EQ(scene->world->environment_light, 0);
+  const Light& light = scene->world->lights[0];
   const auto* env = std::get_if<EnvironmentLight>(&light);
   ASSERT_TRUE(env);
   const LightReference ref = origin_facing_up();
   Pcg32 rng(13);
   for (int k = 0; k < 1000; ++k) {
-    const auto s = sample_light(*scene, light, ref, Vec2(rng.next_float(), rng.next_float()));
+    const auto s = sample_light(*scene->world, light, ref, Vec2(rng.next_float(), rng.next_float()));
     ASSERT_TRUE(s);
     EXPECT_FALSE(s->is_delta);
     EXPECT_NEAR(glm::length(s->wi), 1.f, 1e-5f);
     EXPECT_EQ(s->pdf, uniform_sphere_pdf());
-    EXPECT_EQ(light_pdf(*scene, light, ref, s->wi, SurfaceInteraction{}), s->pdf);
+    EXPECT_EQ(light_pdf(*scene->world, light, ref, s->wi, SurfaceInteraction{}), s->pdf);
     expect_color_near(s->radiance, env->radiance(s->wi), 1e-6f);
     EXPECT_EQ(s->shadow_t_max, kInfinity);
   }
@@ -437,12 +442,12 @@ TEST(LightSampling, ConstantEnvironmentIrradiance) {
   d.environment = ConstantEnvironmentDesc{Color(0.8f)};
   const auto scene = compile(d);
   ASSERT_TRUE(scene);
-  const Light& light = scene->lights[size_t(scene->environment_light)];
+  const Light& light = scene->world->lights[size_t(scene->world->environment_light)];
   Pcg32 rng(17);
   double irradiance = 0.0;
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
-      const auto s = sample_light(*scene, light, origin_facing_up(), grid_sample(i, j, rng));
+      const auto s = sample_light(*scene->world, light, origin_facing_up(), grid_sample(i, j, rng));
       ASSERT_TRUE(s);
       irradiance += double(s->radiance.g * std::max(0.f, s->wi.y) / s->pdf);
     }
@@ -464,14 +469,14 @@ TEST(LightSampling, SelectionGivesEveryLightAShare) {
   d.environment = ConstantEnvironmentDesc{Color(0.05f)};
   const auto scene = compile(d);
   ASSERT_TRUE(scene);
-  const size_t n = scene->lights.size();
+  const size_t n = scene->world->lights.size();
   ASSERT_EQ(n, 7u);  // two emitters, four lights, the sky
-  ASSERT_EQ(scene->light_selection.size(), n);
-  ASSERT_FALSE(scene->light_selection.empty());
+  ASSERT_EQ(scene->world->light_selection.size(), n);
+  ASSERT_FALSE(scene->world->light_selection.empty());
 
   // Every emitting object points at its own light.
-  for (uint32_t o = 0; o < scene->objects.size(); ++o) {
-    const int l = scene->objects[o].light;
+  for (uint32_t o = 0; o < scene->world->objects.size(); ++o) {
+    const int l = scene->world->objects[o].light;
     if (l < 0) continue;
     std::visit(
         [&](const auto& light) {
@@ -480,44 +485,46 @@ TEST(LightSampling, SelectionGivesEveryLightAShare) {
           else
             ADD_FAILURE() << "object " << o << " points at a light that is not an area light";
         },
-        scene->lights[size_t(l)]);
+        scene->world->lights[size_t(l)]);
   }
 
   double total_power = 0.0;
-  for (const Light& l : scene->lights) total_power += light_power(*scene, l);
+  for (const Light& l : scene->world->lights) total_power += light_power(*scene->world, l);
   ASSERT_GT(total_power, 0.0);
   double sum = 0.0;
   for (size_t i = 0; i < n; ++i) {
-    const float pmf = scene->light_selection.pmf(i);
+    const float pmf = scene->world->light_selection.pmf(i);
     EXPECT_GT(pmf, 0.f) << "light " << i;
-    const double expected = 0.5 * light_power(*scene, scene->lights[i]) / total_power + 0.5 / double(n);
+    const double expected =
+        0.5 * light_power(*scene->world, scene->world->lights[i]) / total_power + 0.5 / double(n);
     EXPECT_NEAR(pmf, expected, 1e-6) << "light " << i;
     sum += pmf;
   }
   EXPECT_NEAR(sum, 1.0, 1e-6);
-  EXPECT_EQ(light_power(*scene, scene->lights[5]), 0.f);  // "off"
-  EXPECT_NEAR(scene->light_selection.pmf(5), 0.5 / double(n), 1e-7);
+  EXPECT_EQ(light_power(*scene->world, scene->world->lights[5]), 0.f);  // "off"
+  EXPECT_NEAR(scene->world->light_selection.pmf(5), 0.5 / double(n), 1e-7);
 
   // Stratified choices land on each light in proportion to its pmf.
   std::vector<int> count(n, 0);
   const int choices = 1 << 16;
   for (int k = 0; k < choices; ++k) {
     float pmf = 0.f;
-    const size_t i = scene->light_selection.sample((float(k) + 0.5f) / float(choices), &pmf);
+    const size_t i = scene->world->light_selection.sample((float(k) + 0.5f) / float(choices), &pmf);
     ASSERT_LT(i, n);
-    EXPECT_EQ(pmf, scene->light_selection.pmf(i));
+    EXPECT_EQ(pmf, scene->world->light_selection.pmf(i));
     ++count[i];
   }
   for (size_t i = 0; i < n; ++i)
-    EXPECT_NEAR(double(count[i]) / choices, scene->light_selection.pmf(i), 2.0 / choices) << "light " << i;
+    EXPECT_NEAR(double(count[i]) / choices, scene->world->light_selection.pmf(i), 2.0 / choices)
+        << "light " << i;
 }
 
 // With no lights there is nothing to choose: the integrator skips light sampling.
 TEST(LightSampling, SelectionIsEmptyWithoutLights) {
   const auto scene = compile(with_lights({}));
   ASSERT_TRUE(scene);
-  EXPECT_TRUE(scene->lights.empty());
-  EXPECT_TRUE(scene->light_selection.empty());
+  EXPECT_TRUE(scene->world->lights.empty());
+  EXPECT_TRUE(scene->world->light_selection.empty());
 }
 
 }  // namespace

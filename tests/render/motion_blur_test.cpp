@@ -102,7 +102,7 @@ TEST(MotionBlur, MovingSphereLeavesTheAnalyticStreak) {
   const SceneDesc desc = streak_scene(false);
   const CompileResult c = compile_scene(desc);
   ASSERT_TRUE(c.scene) << c.errors.front();
-  EXPECT_TRUE(c.scene->geometry.moving(0));
+  EXPECT_TRUE(c.scene->world->geometry.moving(0));
   EXPECT_FALSE(c.scene->camera.moves());
   // A ray without a time of its own (picking) sees the frame: halfway through this shutter.
   EXPECT_EQ(c.scene->camera.generate_ray(Vec2(32.f, 2.f), Vec2(0.5f)).time, 0.5f);
@@ -113,7 +113,7 @@ TEST(MotionBlur, MovingCameraBlursAStillScene) {
   const SceneDesc desc = streak_scene(true);
   const CompileResult c = compile_scene(desc);
   ASSERT_TRUE(c.scene) << c.errors.front();
-  EXPECT_FALSE(c.scene->geometry.moving(0));
+  EXPECT_FALSE(c.scene->world->geometry.moving(0));
   EXPECT_TRUE(c.scene->camera.moves());
   expect_streak(testing::render_scene(desc, kStreakSamples));
 }

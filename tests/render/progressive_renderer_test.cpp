@@ -36,8 +36,8 @@ TEST(ProgressiveRenderer, ANewDocumentSupersedesABuildInFlight) {
   ASSERT_TRUE(shown);
   EXPECT_EQ(shown->revision, light_revision);
   ASSERT_TRUE(renderer.scene());
-  EXPECT_EQ(renderer.scene()->objects.size(), 1u);  // the light scene: no stroke object
-  EXPECT_TRUE(renderer.take_messages().empty());    // a cancelled build is not an error
+  EXPECT_EQ(renderer.scene()->world->objects.size(), 1u);  // the light scene: no stroke object
+  EXPECT_TRUE(renderer.take_messages().empty());           // a cancelled build is not an error
 }
 
 // Turning the viewport's denoiser on denoises the samples already taken (the same

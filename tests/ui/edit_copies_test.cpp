@@ -94,13 +94,20 @@ struct Edit {
 const std::vector<Edit>& edits() {
   static const std::vector<Edit> list = {
       {"material colour",
-       [](SceneDesc& s, int step) { std::get<ToonDesc>(s.materials[10].data).color = Color(0.01f * float(step)); }},
+       [](SceneDesc& s, int step) {
+         std::get<ToonDesc>(s.materials[10].data).color = Color(0.01f * float(step));
+       }},
       {"object move",
-       [](SceneDesc& s, int step) { s.objects[12345].transform.translate = Vec3(0.01f * float(step), 0.f, 0.f); }},
+       [](SceneDesc& s, int step) {
+         s.objects[12345].transform.translate = Vec3(0.01f * float(step), 0.f, 0.f);
+       }},
       {"camera orbit", [](SceneDesc& s, int) { s.camera = orbit(s.camera, 0.02f, 0.f); }},
       {"light intensity",
-       [](SceneDesc& s, int step) { std::get<DirectionalLightDesc>(s.lights[0].data).intensity = float(step); }},
-      {"line colour", [](SceneDesc& s, int step) { s.outlines.silhouette.color = Color(0.01f * float(step)); }},
+       [](SceneDesc& s, int step) {
+         std::get<DirectionalLightDesc>(s.lights[0].data).intensity = float(step);
+       }},
+      {"line colour",
+       [](SceneDesc& s, int step) { s.outlines.silhouette.color = Color(0.01f * float(step)); }},
   };
   return list;
 }

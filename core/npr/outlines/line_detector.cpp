@@ -86,7 +86,7 @@ float sample_width_px(const RenderScene& scene, const LineSetup& setup, const Ca
   }
   if (setup.distance_falloff > 0.f && distance > setup.falloff_start && setup.falloff_start > 0.f)
     width *= std::pow(setup.falloff_start / distance, setup.distance_falloff);
-  if (centre.hit) width *= scene.objects[centre.object].lines.width_scale * centre.line_width;
+  if (centre.hit) width *= scene.world->objects[centre.object].lines.width_scale * centre.line_width;
   return width;
 }
 
@@ -151,7 +151,7 @@ LineSetup make_line_setup(const RenderScene& scene, int divisor) {
   // World widths vary per sample; a couple of pixels stands for them.
   s.nominal_radius_px =
       std::max(s.world_width ? 2.f : s.width_px * s.max_width, kMinLineWidthPx) * kStencilRadiusPerWidth;
-  s.miss_distance = std::max(glm::length(scene.scene_center - scene.camera.origin()), 1e-6f);
+  s.miss_distance = std::max(glm::length(scene.world->scene_center - scene.camera.origin()), 1e-6f);
   s.crease_cos = std::cos(glm::radians(o.crease.threshold));
   s.intersection_cos = std::cos(glm::radians(kIntersectionAngle));
   s.depth_jump = o.depth.threshold;
@@ -175,7 +175,7 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
   if (draw.count <= 0) return out;
   const PerceivedSurface centre =
       find_perceived_surface(scene, centre_ray, u_mix, setup.follow, rays, &primary);
-  if (centre.lost || (centre.hit && scene.objects[centre.object].lines.exclude)) return out;
+  if (centre.lost || (centre.hit && scene.world->objects[centre.object].lines.exclude)) return out;
   const float width_px = sample_width_px(scene, setup, camera, centre, centre_ray.d);
   const Stencil stencil = width_px == setup.width_px ? setup.at_width : make_stencil(setup, width_px);
   if (stencil.radius <= 0.f) return out;
@@ -200,7 +200,7 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
     // of a moving object blur with it instead of breaking.
     const Ray ray = camera.generate_ray(film_pos + offset, lens, centre_ray.time);
     const PerceivedSurface s = find_perceived_surface(scene, ray, u_mix, setup.follow, rays);
-    if (s.lost || (s.hit && scene.objects[s.object].lines.exclude)) continue;
+    if (s.lost || (s.hit && scene.world->objects[s.object].lines.exclude)) continue;
     const uint32_t found = breaks(centre, s, setup, occlusion_jump) & wanted;
     if (!found) continue;
     const float theta0 = glm::length(glm::normalize(ray.d) - centre_dir);
@@ -218,7 +218,7 @@ LineSample detect_lines(const RenderScene& scene, const LineSetup& setup, const 
     // The line belongs to the nearer surface of the two.
     const PerceivedSurface& owner = !s.hit || (centre.hit && centre.distance <= s.distance) ? centre : s;
     if (!owner.hit) continue;
-    const LineOverride& lo = scene.objects[owner.object].lines;
+    const LineOverride& lo = scene.world->objects[owner.object].lines;
     if (lo.override_color || owner.line_color) {
       out.override_weight += strongest;
       out.override_color += strongest * (lo.override_color ? lo.color : *owner.line_color);

@@ -69,15 +69,15 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     } else {
       Hit hit;
       ++*rays;
-      if (!scene.geometry.intersect(ray, kInfinity, &hit)) return out;
-      traced = scene.geometry.interaction(ray, hit);
+      if (!scene.world->geometry.intersect(ray, kInfinity, &hit)) return out;
+      traced = scene.world->geometry.interaction(ray, hit);
       length = hit.t * glm::length(ray.d);
     }
     const SurfaceInteraction& si = *hit_si;
-    const RenderObject& object = scene.objects[si.object];
+    const RenderObject& object = scene.world->objects[si.object];
     const Vec3 wo = -glm::normalize(ray.d);
     const uint32_t index = object.material;
-    const Material* material = &scene.materials[index];
+    const Material* material = &scene.world->materials[index];
     const auto* graph = std::get_if<GraphMaterial>(material);
     // Most hits are on plain materials, which need no shading point: it is
     // built only for mixes and graphs, which read it.
@@ -86,8 +86,8 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
     // A graph whose surfaces are all opaque to lines is what is seen, whatever it computes.
     if (material_flags(*material).resolves && !(graph && !graph->program->lines_pass_through)) {
       // Lines do not gather light: a graph reading it sees a fully lit surface.
-      material = resolve_material(scene.materials, index, scene_shading_point(scene, si, wo, depth), u_mix,
-                                  scratch.emplace())
+      material = resolve_material(scene.world->materials, index, scene_shading_point(scene, si, wo, depth),
+                                  u_mix, scratch.emplace())
                      .material;
       if (!material) return out;
     }
@@ -112,9 +112,9 @@ PerceivedSurface find_perceived_surface(const RenderScene& scene, Ray ray, float
       const bool flip = glm::dot(wo, si.ng) < 0.f;
       out.ng = flip ? -si.ng : si.ng;
       out.ns = flip ? -si.ns : si.ns;
-      if (std::holds_alternative<GraphMaterial>(scene.materials[index])) {
-        const SurfaceOverrides o =
-            material_overrides(scene.materials, index, scene_shading_point(scene, si, wo, depth), u_mix);
+      if (std::holds_alternative<GraphMaterial>(scene.world->materials[index])) {
+        const SurfaceOverrides o = material_overrides(scene.world->materials, index,
+                                                      scene_shading_point(scene, si, wo, depth), u_mix);
         out.line_color = o.line_color;
         out.line_width = o.line_width.value_or(1.f);
       }

@@ -85,8 +85,8 @@ TEST(StrokeRibbons, NoPaintPastTheSilhouetteOfStrokes150) {
       const Ray ray{center + glm::length(offset) * glm::normalize(side) - 10.f * d, d};
       Hit hit;
       ++rays;
-      if (!scene.geometry.intersect(ray, kInfinity, &hit)) continue;
-      EXPECT_NE(scene.objects[hit.geometry].name, "ball_strokes") << "ray " << i << " at " << r;
+      if (!scene.world->geometry.intersect(ray, kInfinity, &hit)) continue;
+      EXPECT_NE(scene.world->objects[hit.geometry].name, "ball_strokes") << "ray " << i << " at " << r;
     }
   }
   EXPECT_EQ(rays, 4000);

@@ -27,7 +27,7 @@ SceneDesc painted_ball(Color paint, int seed) {
 TriangleMesh strokes_of(const SceneDesc& d) {
   const CompileResult c = compile_scene(d);
   EXPECT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
-  const auto& shape = c.scene->geometry.shape(c.scene->geometry.shape_count() - 1);
+  const auto& shape = c.scene->world->geometry.shape(c.scene->world->geometry.shape_count() - 1);
   EXPECT_TRUE(std::holds_alternative<TriangleMesh>(shape));
   return std::get<TriangleMesh>(shape);
 }

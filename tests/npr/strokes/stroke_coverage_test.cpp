@@ -39,8 +39,8 @@ double covered(const SceneDesc& d) {
     for (int x = 0; x < 160; ++x) {
       Hit hit;
       const Ray ray = scene.camera.generate_ray(Vec2(float(x) + 0.5f, float(y) + 0.5f), Vec2(0.5f));
-      if (!scene.geometry.intersect(ray, kInfinity, &hit)) continue;
-      const bool stroke = scene.objects[hit.geometry].name == "paint";
+      if (!scene.world->geometry.intersect(ray, kInfinity, &hit)) continue;
+      const bool stroke = scene.world->objects[hit.geometry].name == "paint";
       on_object += 1;
       on_stroke += stroke ? 1 : 0;
     }

@@ -66,8 +66,8 @@ TEST(StrokeScenes, HiddenObjectGrowsNoStrokes) {
     if (o.name == d.strokes[0].object) o.visible = false;
   CompileResult c = compile_scene(d);
   ASSERT_TRUE(c.scene) << (c.errors.empty() ? "" : c.errors.front());
-  for (uint32_t i = 0; i < c.scene->geometry.shape_count(); ++i)
-    EXPECT_FALSE(c.scene->geometry.alpha_mask(i));
+  for (uint32_t i = 0; i < c.scene->world->geometry.shape_count(); ++i)
+    EXPECT_FALSE(c.scene->world->geometry.alpha_mask(i));
 }
 
 }  // namespace
