@@ -1,10 +1,11 @@
-// inkray-bench-edits SCENE.json [EDITS]: what one editor edit costs on the way to the
+// inkray-bench-edits SCENE.json [EDITS [KIND]]: what one editor edit costs on the way to the
 // renderer, step by step, without a window: the panel's copy of the document and its
 // change, the check that the edit adds no problem (problems_added), the undoable edit
 // (Document::edit), the renderer's copy (ProgressiveRenderer::submit) and the
 // incremental compile the viewport runs, and the viewport's first preview of the result
 // (one pass at 1/8 resolution, set_scene included). Prints the median and p95 of each step for
-// material, transform and camera edits (docs/benchmarks.md, "Large documents").
+// material, transform, camera and (with stroke emitters) brush edits, or of KIND's alone
+// (docs/benchmarks.md, "Large documents").
 #include "core/compiler/compile.h"
 #include "core/document/edit_checks.h"
 #include "core/document/json_io.h"
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace inkray {
@@ -38,8 +40,8 @@ double quantile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))];
 }
 
-enum class Kind { material, transform, camera };
-constexpr std::array<const char*, 3> kKindNames{"material", "transform", "camera"};
+enum class Kind { material, transform, camera, brush };
+constexpr std::array<const char*, 4> kKindNames{"material", "transform", "camera", "brush"};
 
 int first_used_material(const SceneDesc& s) {
   for (size_t m = 0; m < s.materials.size(); ++m)
@@ -66,6 +68,12 @@ void change(Kind kind, int step, const SceneDesc& base, SceneDesc& s) {
     case Kind::camera:
       s.camera = orbit(s.camera, 0.02f, 0.f);
       break;
+    case Kind::brush:
+      // The first emitter's brush, another each edit: procedural kinds in turn, each
+      // at its own pressure.
+      s.strokes[0].brush = step % 2 ? BrushKind::bristle : BrushKind::flat;
+      s.strokes[0].pressure = 0.5f + 0.001f * float(step % 400);
+      break;
   }
 }
 
@@ -77,7 +85,8 @@ void print(const char* what, const std::vector<double>& v) {
   std::printf("  %-9s p50 %8.2f ms  p95 %8.2f ms\n", what, quantile(v, 0.5), quantile(v, 0.95));
 }
 
-int run(const char* file, int edits) {
+// `only`: the one kind to time, or all of them when it names none.
+int run(const char* file, int edits, std::string_view only) {
   const SceneLoadResult loaded = load_scene(file, ReadFor::editing);
   if (!loaded) {
     for (const std::string& e : loaded.errors) std::fprintf(stderr, "%s\n", e.c_str());
@@ -88,6 +97,8 @@ int run(const char* file, int edits) {
               edits);
   for (size_t k = 0; k < kKindNames.size(); ++k) {
     const Kind kind = Kind(k);
+    if ((kind == Kind::brush && loaded.scene->strokes.empty()) || (!only.empty() && only != kKindNames[k]))
+      continue;
     Document document;
     document.reset(*loaded.scene, file);
     SceneCompiler compiler;
@@ -145,14 +156,20 @@ int run(const char* file, int edits) {
 }  // namespace inkray
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argc > 3) {
-    std::fprintf(stderr, "usage: inkray-bench-edits SCENE.json [EDITS]\n");
+  if (argc < 2 || argc > 4) {
+    std::fprintf(stderr, "usage: inkray-bench-edits SCENE.json [EDITS [material|transform|camera|brush]]\n");
     return 2;
   }
-  const int edits = argc == 3 ? std::atoi(argv[2]) : 20;
+  const int edits = argc >= 3 ? std::atoi(argv[2]) : 20;
+  const std::string_view only = argc == 4 ? argv[3] : "";
+  if (!only.empty() &&
+      std::find(inkray::kKindNames.begin(), inkray::kKindNames.end(), only) == inkray::kKindNames.end()) {
+    std::fprintf(stderr, "inkray-bench-edits: KIND must be material, transform, camera or brush\n");
+    return 2;
+  }
   if (edits < 1 || edits > 100000) {
     std::fprintf(stderr, "inkray-bench-edits: EDITS must be 1 to 100000\n");
     return 2;
   }
-  return inkray::run(argv[1], edits);
+  return inkray::run(argv[1], edits, only);
 }

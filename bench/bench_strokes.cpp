@@ -149,6 +149,8 @@ StrokeMemory stroke_memory(const RenderScene& scene, size_t roots) {
                     bytes_of(mesh->colors) + bytes_of(mesh->indices);
     m.triangles += meshes[0]->triangle_count();
     m.geometry += mask->memory_bytes();
+    if (const AlphaTexture* brush = scene.world->geometry.alpha_texture(i); brush != mask)
+      m.geometry += brush->texels.capacity();
     m.bvh += bvh.bvh_bytes();
   }
   // The roots and each stroke's first vertex, kept for repainting (compile_strokes.cpp).

@@ -15,19 +15,22 @@
 namespace inkray {
 namespace {
 
-// What an emitter's strokes are, whatever they are painted with: placement,
-// ribbons and brush depend only on the emitter's shape parameters, its object's
-// shape and placement and the scene's folder, so they are kept in the asset
-// cache and an edit elsewhere in the document (a material, a light, the
-// outlines) does not regrow them. Another paint is cached too, under the colours'
-// own inputs (the object's material and the emitter's colour jitter): a colour per
-// stroke (MeshPaint), which hits read in place of the mesh's vertex colours.
+// What an emitter's strokes are, whatever they are painted with and whatever brush
+// paints them: placement and ribbons depend only on the emitter's shape parameters,
+// its object's shape and placement and the scene's folder, so they are kept in the
+// asset cache and an edit elsewhere in the document (a material, a light, the
+// outlines, the brush) does not regrow them. Another paint is cached too, under the
+// colours' own inputs (the object's material and the emitter's colour jitter): a
+// colour per stroke (MeshPaint), which hits read in place of the mesh's vertex
+// colours. The brush is the instance's (EmbreeScene::add), read from the asset cache
+// by every compile.
 struct StrokeShape {
   std::vector<SurfacePoint> roots;
   std::vector<uint32_t> first_vertex;  // stroke i owns vertices [first_vertex[i], first_vertex[i + 1])
   std::shared_ptr<const std::vector<uint32_t>> stroke_of_triangle;
-  // The ribbons with the brush's alpha test. Its mesh is painted as painted_key
-  // says (the paint of its first compile): while that paint holds, no MeshPaint.
+  // The ribbons and their alpha layout (each triangle's brush coordinates, the paint
+  // layer), without a texture. Its mesh is painted as painted_key says (the paint of
+  // its first compile): while that paint holds, no MeshPaint.
   std::shared_ptr<const ShapeBvh> bvh;
   std::string painted_key;
 };
@@ -48,21 +51,26 @@ struct BuiltStrokes {
   uint32_t base_object = 0;
   std::string key;
   std::shared_ptr<const StrokeShape> shape;
+  // The brush its alpha test reads, found in the asset cache by its parameters and its
+  // image's stamp (an image changed on disk, or found, is a new brush).
+  std::shared_ptr<const AlphaTexture> brush;
   bool stand_in = false;  // its brush image could not be read: painted in the stand-in checker
 };
 
-// Everything a StrokeShape depends on: the emitter without its name, colour jitter and
-// visibility, and the brush image's stamp (an image changed on disk, or found, is a new brush).
-std::string shape_key(const SceneDesc& desc, const StrokeEmitterDesc& e, const std::string& object_key,
-                      bool stand_in) {
+// Everything a StrokeShape depends on: the emitter without its name, colour jitter,
+// visibility and brush.
+std::string shape_key(const SceneDesc& desc, const StrokeEmitterDesc& e, const std::string& object_key) {
   StrokeEmitterDesc shape_only = e;
   shape_only.name.clear();
   shape_only.hue_jitter = shape_only.saturation_jitter = shape_only.value_jitter = 0.f;
   shape_only.indirect = false;  // where the instance is seen, not what it is
-  std::string brush;
-  if (e.brush == BrushKind::image) brush = file_stamp(desc.base_dir / e.brush_image).value_or("missing");
-  if (stand_in) brush += "|stand-in";
-  return "strokes|" + desc.base_dir.string() + "|" + param_key(shape_only) + "|" + brush + "|" + object_key;
+  // The brush's coverage is the alpha test's (its texture), not the ribbons'.
+  const StrokeEmitterDesc any_brush;
+  shape_only.brush = any_brush.brush;
+  shape_only.brush_image = any_brush.brush_image;
+  shape_only.bristles = any_brush.bristles;
+  shape_only.pressure = any_brush.pressure;
+  return "strokes|" + desc.base_dir.string() + "|" + param_key(shape_only) + "|" + object_key;
 }
 
 // Everything the colours depend on beyond the shape: the jitter, and the material
@@ -110,15 +118,15 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const World& wo
     if (!described_object(desc, e.object)) errors.push_back(where + "no object named \"" + e.object + "\"");
     return std::nullopt;
   }
-  // The brush first, found or read, so the cache keeps it while the strokes use it.
+  // The brush first: one that cannot be read grows no strokes.
   std::string error;
   const auto brush = build.assets.brush(e, desc.base_dir, &error);
   if (!brush) {
     errors.push_back(where + error);
     return std::nullopt;
   }
-  const bool stand_in = brush == stand_in_brush();
-  BuiltStrokes built{&e, *object, shape_key(desc, e, anchors[*object].key, stand_in), nullptr, stand_in};
+  BuiltStrokes built{&e,      *object, shape_key(desc, e, anchors[*object].key),
+                     nullptr, brush,   brush == stand_in_brush()};
   built.shape = build.assets.find<StrokeShape>(built.key);
   if (!built.shape) {
     const auto surface = StrokeSurface::from_shape(*anchors[*object].world, &error);
@@ -126,7 +134,7 @@ std::optional<BuiltStrokes> build_emitter(const SceneDesc& desc, const World& wo
       errors.push_back(where + "object \"" + e.object + "\": " + error);
       return std::nullopt;
     }
-    auto mask = std::make_shared<AlphaMask>(*brush);  // this emitter's own layer settings follow
+    auto mask = std::make_shared<AlphaMask>();  // the layout; the brush is the instance's
     auto shape = std::make_shared<StrokeShape>();
     shape->roots = place_roots(*surface, size_t(e.count), uint32_t(e.seed), nullptr, cancel);
     if (cancel.requested()) return std::nullopt;
@@ -215,11 +223,11 @@ void compile_strokes(const SceneDesc& desc, World& world, std::span<const Stroke
               placed_key, std::make_shared<const Shape>(transformed(std::get<TriangleMesh>(*painted), move)));
       }
       world.geometry.add_moving(b.shape->bvh, anchor.rest_to_open, anchor.rest_to_close, painted, at_frame,
-                                b.emitter->indirect, paint);
+                                b.emitter->indirect, paint, b.brush);
       continue;
     }
     if (move.is_identity()) {
-      world.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect, paint);
+      world.geometry.add(b.shape->bvh, Transform{}, painted, b.emitter->indirect, paint, b.brush);
       continue;
     }
     // An object that moved since its rest carries its strokes along: the ribbons are
@@ -241,7 +249,7 @@ void compile_strokes(const SceneDesc& desc, World& world, std::span<const Stroke
           std::make_shared<const ShapeBvh>(std::make_shared<const Shape>(std::move(mesh)), std::move(mask)));
       ++build.counters.shape_bvhs;
     }
-    world.geometry.add(moved, Transform{}, moved->shared_shape(), b.emitter->indirect, paint);
+    world.geometry.add(moved, Transform{}, moved->shared_shape(), b.emitter->indirect, paint, b.brush);
   }
 }
 

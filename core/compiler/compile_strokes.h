@@ -39,7 +39,8 @@ struct StrokeBuild {
 
 // Call after the scene's objects are added and before geometry.commit(). For
 // each emitter with a positive count whose object was compiled (hidden objects
-// grow no strokes): places, grows and meshes the strokes, appends a white
+// grow no strokes): places, grows and meshes the strokes (or finds them grown: a new
+// brush is only a new texture for their alpha test, placed with them), appends a white
 // DiffuseMaterial "<emitter>.strokes" (the strokes' vertex colours carry their
 // paint; the stand-in checker when the brush image is a stand-in, asset_cache.h)
 // and an object "<emitter>" whose `source` is the base object's, so

@@ -9,11 +9,11 @@
 
 namespace inkray {
 
-uint32_t AlphaMask::variant_of(uint32_t prim) const {
+uint32_t AlphaMask::variant_of(uint32_t prim, int texture_variants) const {
   if (!triangles.empty())
-    return prim < triangles.size() ? (uint32_t(triangles[prim].pick) * uint32_t(variants)) >> 8 : 0;
-  if (variants <= 1 || triangles_per_item == 0) return 0;
-  return hash_u32(prim / triangles_per_item) % uint32_t(variants);
+    return prim < triangles.size() ? (uint32_t(triangles[prim].pick) * uint32_t(texture_variants)) >> 8 : 0;
+  if (texture_variants <= 1 || triangles_per_item == 0) return 0;
+  return hash_u32(prim / triangles_per_item) % uint32_t(texture_variants);
 }
 
 float AlphaMask::coverage(Vec2 uv, uint32_t prim) const { return coverage_in(int(variant_of(prim)), uv); }

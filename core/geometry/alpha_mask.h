@@ -1,6 +1,7 @@
 // Coverage of an alpha-tested triangle mesh (painterly strokes): an 8-bit alpha
-// texture over the mesh's uv, in a few variants so neighbouring items (strokes)
-// do not all look alike. EmbreeScene tests hits against it stochastically.
+// texture over the mesh's uv (the brush), in a few variants so neighbouring items
+// (strokes) do not all look alike, and what the mesh itself says about its alpha test.
+// EmbreeScene tests hits against it stochastically.
 #pragma once
 
 #include "core/math/types.h"
@@ -22,12 +23,26 @@ struct AlphaTriangle {
 };
 static_assert(sizeof(AlphaTriangle) == 16);
 
-struct AlphaMask {
+// The coverage over uv of one item (a brush), in variants. What an alpha test reads
+// besides its mesh: an instance of a mesh may bring its own (EmbreeScene::add), so a
+// new brush is a new texture for the same mesh and BVH.
+struct AlphaTexture {
   int width = 0;                // texels across u
   int height = 0;               // texels along v
   int variants = 1;             // stacked layers of width x height texels
   std::vector<uint8_t> texels;  // variants * height * width, row v, column u; 255 is opaque
 
+  // Bilinear coverage in [0, 1] at uv (clamped to [0, 1]^2) in one variant, and in a
+  // triangle's own terms (corner alphas included) at barycentrics (b1, b2).
+  float coverage_in(int variant, Vec2 uv) const;
+  float coverage_of(const AlphaTriangle& t, float b1, float b2) const;
+  uint8_t& at(int variant, int u, int v) { return texels[(size_t(variant) * height + v) * width + u]; }
+  uint8_t at(int variant, int u, int v) const { return texels[(size_t(variant) * height + v) * width + u]; }
+};
+
+// An alpha-tested mesh's own alpha data, the layer it lies in, and the texture its
+// alpha test reads unless its instance brings another.
+struct AlphaMask : AlphaTexture {
   // Consecutive triangles that form one item and share a variant (a stroke's
   // ribbon); 0 puts every triangle on variant 0. Unused when `triangles` is set.
   uint32_t triangles_per_item = 0;
@@ -47,20 +62,17 @@ struct AlphaMask {
   // quad (a, b, b1, a1): the mesh is traced as quads, half the primitives.
   bool quads = false;
 
-  // Bilinear coverage in [0, 1] at uv (clamped to [0, 1]^2) of triangle prim.
+  // Bilinear coverage in [0, 1] at uv (clamped to [0, 1]^2) of triangle prim, in this
+  // mask's own texture.
   float coverage(Vec2 uv, uint32_t prim) const;
-  // The same in one variant, and in the triangle's own terms (corner alphas
-  // included) at barycentrics (b1, b2).
-  float coverage_in(int variant, Vec2 uv) const;
-  float coverage_of(const AlphaTriangle& t, float b1, float b2) const;
-  uint32_t variant_of(uint32_t prim) const;
-  uint8_t& at(int variant, int u, int v) { return texels[(size_t(variant) * height + v) * width + u]; }
-  uint8_t at(int variant, int u, int v) const { return texels[(size_t(variant) * height + v) * width + u]; }
+  // The variant triangle prim reads in a texture of `texture_variants`, and in this one.
+  uint32_t variant_of(uint32_t prim, int texture_variants) const;
+  uint32_t variant_of(uint32_t prim) const { return variant_of(prim, variants); }
   size_t memory_bytes() const { return texels.capacity() + triangles.capacity() * sizeof(AlphaTriangle); }
 };
 
 // Inline: the filter calls these for every candidate hit on paint.
-inline float AlphaMask::coverage_in(int variant, Vec2 uv) const {
+inline float AlphaTexture::coverage_in(int variant, Vec2 uv) const {
   if (width <= 0 || height <= 0) return 1.f;
   // Texel centres sit at (i + 0.5) / width; beyond the outer centres the edge texel holds.
   // Compared so that a NaN uv lands on texel 0 instead of reaching the cast
@@ -83,7 +95,7 @@ inline float AlphaMask::coverage_in(int variant, Vec2 uv) const {
   return (top + ty * (bottom - top)) * (1.f / 255.f);
 }
 
-inline float AlphaMask::coverage_of(const AlphaTriangle& t, float b1, float b2) const {
+inline float AlphaTexture::coverage_of(const AlphaTriangle& t, float b1, float b2) const {
   const float b0 = 1.f - b1 - b2;
   const float fade = (b0 * float(t.fade[0]) + b1 * float(t.fade[1]) + b2 * float(t.fade[2])) * (1.f / 255.f);
   if (fade <= 0.f) return 0.f;

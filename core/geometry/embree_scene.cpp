@@ -50,12 +50,12 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
   if (sphere->intersect(ray, r->tnear, r->tfar)) r->tfar = -kInfinity;
 }
 
-// Whether a candidate hit on an alpha-tested mesh counts. The uniform number
-// comes from a hash of the ray's bits and the triangle: the same ray always
-// decides the same way (Embree may report a triangle twice under spatial
-// splits), while the many rays of a pixel sample the coverage.
-bool alpha_accepts(const TriangleMesh& mesh, const AlphaMask& mask, const RTCFilterFunctionNArguments* args,
-                   uint32_t prim, float b1, float b2) {
+// Whether a candidate hit on an alpha-tested mesh counts, the mesh's mask read in
+// `texture` (its instance's brush). The uniform number comes from a hash of the ray's
+// bits and the triangle: the same ray always decides the same way (Embree may report a
+// triangle twice under spatial splits), while the many rays of a pixel sample the coverage.
+bool alpha_accepts(const TriangleMesh& mesh, const AlphaMask& mask, const AlphaTexture& texture,
+                   const RTCFilterFunctionNArguments* args, uint32_t prim, float b1, float b2) {
   RTCRayN* ray = args->ray;
   RTCHitN* hit = args->hit;
   const unsigned n = args->N;
@@ -70,11 +70,11 @@ bool alpha_accepts(const TriangleMesh& mesh, const AlphaMask& mask, const RTCFil
   }
   float alpha = 0.f;
   if (!mask.triangles.empty()) {
-    alpha = mask.coverage_of(mask.triangles[prim], b1, b2);
+    alpha = texture.coverage_of(mask.triangles[prim], b1, b2);
   } else {
     const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
     const Vec2 uv = (1.f - b1 - b2) * mesh.uvs[idx[0]] + b1 * mesh.uvs[idx[1]] + b2 * mesh.uvs[idx[2]];
-    alpha = mask.coverage(uv, prim);
+    alpha = texture.coverage_in(int(mask.variant_of(prim, texture.variants)), uv);
   }
   if (alpha >= 1.f) return true;
   if (alpha <= 0.f) return false;
@@ -96,8 +96,8 @@ struct PaintHit {
   bool found = true;  // false: no paint yet, any accepted paint is better
 };
 
-// Every query's context: Embree's, and for a query resolving paint order the
-// best paint hit so far (null otherwise).
+// Every query's context: Embree's, what each instance's alpha test reads, and for a
+// query resolving paint order the best paint hit so far (null otherwise).
 struct QueryContext {
   RTCIntersectContext rtc;
   PaintHit* paint = nullptr;
@@ -109,10 +109,17 @@ struct QueryContext {
   // (motion_pieces) has ids from `first_piece` on for its further pieces.
   const uint32_t* piece_owner = nullptr;
   uint32_t first_piece = kNoInstance;
+  // By instance index (EmbreeScene::alpha_texture).
+  const AlphaTexture* const* alpha_textures = nullptr;
 
-  QueryContext(const std::vector<uint32_t>& owners, size_t instances)
-      : piece_owner(owners.data()), first_piece(uint32_t(instances)) {}
+  QueryContext(const std::vector<uint32_t>& owners, const std::vector<const AlphaTexture*>& textures)
+      : piece_owner(owners.data()), first_piece(uint32_t(textures.size())), alpha_textures(textures.data()) {}
   uint32_t instance_of(uint32_t id) const { return id < first_piece ? id : piece_owner[id - first_piece]; }
+  // The instance whose BVH a filter is called from: the one asked directly, or the one
+  // Embree is inside.
+  uint32_t filtered_instance(const RTCIntersectContext* rtc_context) const {
+    return instance != kNoInstance ? instance : instance_of(rtc_context->instID[0]);
+  }
 };
 
 // The closest hit over the main top level and, when some shapes were placed anew
@@ -140,7 +147,9 @@ void quad_to_triangle(uint32_t q, float u, float v, uint32_t* prim, float* b1, f
 }
 
 // We only call the single-ray API, so filters see N == 1. The user data is the
-// ShapeBvh, whose shape is the mesh (in the space the filter's ray is in).
+// ShapeBvh, whose shape is the mesh (in the space the filter's ray is in); the
+// texture comes from the query, by the instance (Embree's instance id, which every
+// query through a top level has, or the instance a direct query names).
 void alpha_filter(const RTCFilterFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const auto* bvh = static_cast<const ShapeBvh*>(args->geometryUserPtr);
@@ -148,22 +157,20 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
   float b1 = RTCHitN_u(args->hit, args->N, 0), b2 = RTCHitN_v(args->hit, args->N, 0);
   if (bvh->traced_as_quads()) quad_to_triangle(prim, b1, b2, &prim, &b1, &b2);
   const TriangleMesh& mesh = std::get<TriangleMesh>(bvh->shape());
-  PaintHit* paint = reinterpret_cast<const QueryContext*>(args->context)->paint;
-  if (paint) {
+  const auto* query = reinterpret_cast<const QueryContext*>(args->context);
+  const uint32_t instance = query->filtered_instance(args->context);
+  const AlphaTexture& texture = *query->alpha_textures[instance];
+  if (PaintHit* paint = query->paint) {
     // Resolving paint order: only paint painted after the best so far matters,
     // and every hit is refused so the query looks on.
-    const uint32_t direct = reinterpret_cast<const QueryContext*>(args->context)->instance;
-    const auto* query = reinterpret_cast<const QueryContext*>(args->context);
-    const uint32_t instance =
-        direct != QueryContext::kNoInstance ? direct : query->instance_of(args->context->instID[0]);
     args->valid[0] = 0;
     if (paint->found && (instance < paint->instance || (instance == paint->instance && prim <= paint->prim)))
       return;
-    if (alpha_accepts(mesh, *bvh->mask(), args, prim, b1, b2))
+    if (alpha_accepts(mesh, *bvh->mask(), texture, args, prim, b1, b2))
       *paint = {instance, prim, RTCRayN_tfar(args->ray, args->N, 0), b1, b2, true};
     return;
   }
-  if (!alpha_accepts(mesh, *bvh->mask(), args, prim, b1, b2)) args->valid[0] = 0;
+  if (!alpha_accepts(mesh, *bvh->mask(), texture, args, prim, b1, b2)) args->valid[0] = 0;
 }
 
 // Instance masks: every shape but paint is kSolid, paint is kPaint, and also
@@ -422,10 +429,11 @@ uint32_t EmbreeScene::add(TriangleMesh mesh, std::shared_ptr<const AlphaMask> ma
 
 uint32_t EmbreeScene::add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
                           std::shared_ptr<const Shape> world, bool indirect,
-                          std::shared_ptr<const MeshPaint> paint) {
+                          std::shared_ptr<const MeshPaint> paint, std::shared_ptr<const AlphaTexture> brush) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::add after commit");
   impl_->instances.push_back({std::move(bvh), to_world, std::move(world), indirect});
   impl_->instances.back().paint = std::move(paint);
+  impl_->instances.back().brush = std::move(brush);
   return uint32_t(impl_->instances.size() - 1);
 }
 
@@ -444,16 +452,21 @@ void EmbreeScene::replace(uint32_t index, std::shared_ptr<const ShapeBvh> bvh, c
   instance.to_world = to_world;
   instance.world = std::move(world);
   instance.paint = nullptr;
+  instance.brush = nullptr;
 }
 
 uint32_t EmbreeScene::add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open,
                                  const Transform& close, std::shared_ptr<const Shape> local,
                                  std::shared_ptr<const Shape> world, bool indirect,
-                                 std::shared_ptr<const MeshPaint> paint) {
+                                 std::shared_ptr<const MeshPaint> paint,
+                                 std::shared_ptr<const AlphaTexture> brush) {
   if (impl_->committed) throw std::logic_error("EmbreeScene::add_moving after commit");
-  Instance instance{std::move(bvh), open,  std::move(world), indirect,
-                    true,           close, std::move(local), std::move(paint)};
-  if (!instance.local) instance.local = instance.bvh->shared_shape();
+  Instance instance{std::move(bvh), open, std::move(world), indirect};
+  instance.moving = true;
+  instance.to_close = close;
+  instance.local = local ? std::move(local) : instance.bvh->shared_shape();
+  instance.paint = std::move(paint);
+  instance.brush = std::move(brush);
   impl_->instances.push_back(std::move(instance));
   return uint32_t(impl_->instances.size() - 1);
 }
@@ -469,6 +482,7 @@ EmbreeScene::TopLevels EmbreeScene::split_top_levels(const EmbreeScene* previous
   // The shapes placed anew, with those previous already traced apart.
   std::vector<uint32_t> live = previous->impl_->live;
   bool share_main = true;
+  // A new brush or paint is not a new placement: hits find both by the instance.
   for (uint32_t id = 0; id < now.size(); ++id) {
     const bool same = now[id].bvh == before[id].bvh && now[id].indirect == before[id].indirect &&
                       now[id].to_world.m == before[id].to_world.m;
@@ -503,6 +517,8 @@ void EmbreeScene::commit(const EmbreeScene* previous) {
   };
   impl_->motion.assign(impl_->instances.size(), {});
   impl_->still.assign(impl_->instances.size(), nullptr);
+  impl_->alpha_textures.resize(impl_->instances.size());
+  for (uint32_t id = 0; id < impl_->instances.size(); ++id) impl_->alpha_textures[id] = alpha_texture(id);
   // previous's Embree instance of shape `id`, when it places what this one does.
   const auto reusable = [&](uint32_t id) -> RTCGeometry {
     if (!previous || id >= previous->impl_->still.size()) return nullptr;
@@ -535,7 +551,7 @@ void EmbreeScene::commit(const EmbreeScene* previous) {
       // scene without moving shapes is traced exactly as without motion blur. A
       // singular placement is not traced at all (docs/architecture.md, "Singular transforms").
       if (RTCGeometry shared = reusable(id)) {
-        // Committed already, with this instance's mask.
+        // Committed already, with this instance's ray mask (paint or solid).
         rtcRetainGeometry(shared);
         if (RTCScene top = top_level_of(id)) rtcAttachGeometryByID(top, shared, id);
         impl_->still[id] = shared;
@@ -593,6 +609,7 @@ bool EmbreeScene::same_instances(const EmbreeScene& other) const {
   for (size_t i = 0; i < a.size(); ++i)
     if (a[i].bvh != b[i].bvh || a[i].world != b[i].world || a[i].to_world.m != b[i].to_world.m ||
         a[i].indirect != b[i].indirect || a[i].moving != b[i].moving || a[i].paint != b[i].paint ||
+        a[i].brush != b[i].brush ||
         (a[i].moving && (a[i].to_close.m != b[i].to_close.m || a[i].local != b[i].local)))
       return false;
   return true;
@@ -615,7 +632,7 @@ Transform EmbreeScene::placement(uint32_t index, float time) const {
 }
 
 bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind) const {
-  QueryContext context(impl_->piece_owner, impl_->instances.size());
+  QueryContext context(impl_->piece_owner, impl_->alpha_textures);
   rtcInitIntersectContext(&context.rtc);
   if (!traceable(ray, t_max)) return false;
   RTCRayHit rh{};
@@ -683,7 +700,7 @@ void EmbreeScene::paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) con
   if (!(d_len > 0.f) || !(ng_len > 0.f)) return;
   const float cos_theta = std::abs(glm::dot(ray.d, n)) / (d_len * ng_len);
   const float reach = impl_->camera_layer / (std::max(cos_theta, 0.05f) * d_len);
-  QueryContext context(impl_->piece_owner, impl_->instances.size());
+  QueryContext context(impl_->piece_owner, impl_->alpha_textures);
   rtcInitIntersectContext(&context.rtc);
   PaintHit top;
   top.found = false;
@@ -713,7 +730,7 @@ void EmbreeScene::resolve_paint(const Ray& ray, float layer_thickness, const Vec
   const float cos_theta = std::abs(glm::dot(ray.d, ng)) / (d_len * ng_len);
   const float reach = layer_thickness / (std::max(cos_theta, 0.05f) * d_len);
   // The same ray, so every alpha test decides as it did, over that stretch only.
-  QueryContext context(impl_->piece_owner, impl_->instances.size());
+  QueryContext context(impl_->piece_owner, impl_->alpha_textures);
   rtcInitIntersectContext(&context.rtc);
   PaintHit top{hit->geometry, hit->prim, hit->t, hit->barycentric.x, hit->barycentric.y};
   context.paint = &top;
@@ -737,7 +754,7 @@ void EmbreeScene::resolve_paint(const Ray& ray, float layer_thickness, const Vec
 }
 
 bool EmbreeScene::occluded(const Ray& ray, float t_max) const {
-  QueryContext context(impl_->piece_owner, impl_->instances.size());
+  QueryContext context(impl_->piece_owner, impl_->alpha_textures);
   rtcInitIntersectContext(&context.rtc);
   if (!traceable(ray, t_max)) return false;
   RTCRay r = to_rtc(ray, t_max);

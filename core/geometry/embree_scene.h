@@ -52,7 +52,8 @@ class ShapeBvh {
   // (or its per-triangle AlphaTriangle's), decided by a hash of the ray and the
   // triangle, so coverage anti-aliases over samples and shadow rays see partial
   // coverage; shadow rays skip paint (AlphaMask::paint). Ordinary shapes pay
-  // nothing.
+  // nothing. The texture read is the instance's brush where it brings one
+  // (EmbreeScene::add), so meshes under different brushes share one BVH.
   explicit ShapeBvh(std::shared_ptr<const Shape> shape, std::shared_ptr<const AlphaMask> mask = nullptr);
   ~ShapeBvh();
   ShapeBvh(const ShapeBvh&) = delete;
@@ -99,10 +100,12 @@ class EmbreeScene {
   // shape when to_world is the identity.
   // `indirect` false hides paint (AlphaMask::paint) from RayKind::indirect rays;
   // other shapes are seen by every ray.
-  // `paint`, for a mesh, stands for its vertex colours in what hits read.
+  // `paint`, for a mesh, stands for its vertex colours in what hits read; `brush`, for
+  // an alpha-tested one, for its mask's texture in the alpha test.
   uint32_t add(std::shared_ptr<const ShapeBvh> bvh, const Transform& to_world,
                std::shared_ptr<const Shape> world, bool indirect = true,
-               std::shared_ptr<const MeshPaint> paint = nullptr);
+               std::shared_ptr<const MeshPaint> paint = nullptr,
+               std::shared_ptr<const AlphaTexture> brush = nullptr);
   // A shared bottom level that moves while the shutter is open (docs/architecture.md,
   // "Motion blur"): placed by `open` at time 0 and by `close` at time 1, an Embree
   // instance of two time steps in between (scale and shear and the translation
@@ -113,7 +116,8 @@ class EmbreeScene {
   // shape() read.
   uint32_t add_moving(std::shared_ptr<const ShapeBvh> bvh, const Transform& open, const Transform& close,
                       std::shared_ptr<const Shape> local, std::shared_ptr<const Shape> world,
-                      bool indirect = true, std::shared_ptr<const MeshPaint> paint = nullptr);
+                      bool indirect = true, std::shared_ptr<const MeshPaint> paint = nullptr,
+                      std::shared_ptr<const AlphaTexture> brush = nullptr);
   // An uncommitted scene placing what the committed `other` places, for an edit that
   // moves a few of its shapes (replace) before commit(&other).
   static EmbreeScene with_instances_of(const EmbreeScene& other);
@@ -123,7 +127,8 @@ class EmbreeScene {
   // Builds the top level. With `previous` (a committed scene, say the last compile's),
   // an instance that places the same BVH by the same transform as previous's instance of
   // the same index takes previous's Embree instance (Embree attaches a geometry to any
-  // number of scenes): moving one object of thousands makes one new instance. The
+  // number of scenes): moving one object of thousands makes one new instance, and a new
+  // brush none (the alpha test finds each instance's brush through the query). The
   // shapes placed anew are traced from a small second top level, and previous's main
   // one is shared while the same few keep moving (docs/architecture.md, "Edits of
   // large documents"): a drag rebuilds a top level of one instance, not of thousands.
@@ -146,8 +151,13 @@ class EmbreeScene {
 
   const Shape& shape(uint32_t index) const { return *impl_->instances[index].world; }
   size_t shape_count() const { return impl_->instances.size(); }
-  // The shape's alpha mask, or null for an opaque shape.
+  // The shape's alpha mask (its BVH's), or null for an opaque shape; and the texture its
+  // alpha test reads: the instance's brush, or that mask's own.
   const AlphaMask* alpha_mask(uint32_t index) const { return impl_->instances[index].bvh->mask(); }
+  const AlphaTexture* alpha_texture(uint32_t index) const {
+    const Instance& instance = impl_->instances[index];
+    return instance.brush ? instance.brush.get() : instance.bvh->mask();
+  }
   const ShapeBvh& bvh(uint32_t index) const { return *impl_->instances[index].bvh; }
   // Whether the shape moves while the shutter is open (add_moving), and whether any does.
   bool moving(uint32_t index) const { return impl_->instances[index].moving; }
@@ -168,7 +178,8 @@ class EmbreeScene {
     bool moving = false;
     Transform to_close{};
     std::shared_ptr<const Shape> local{};
-    std::shared_ptr<const MeshPaint> paint{};  // stands for the mesh's vertex colours
+    std::shared_ptr<const MeshPaint> paint{};     // stands for the mesh's vertex colours
+    std::shared_ptr<const AlphaTexture> brush{};  // stands for its mask's texture
   };
   struct Impl {
     std::vector<Instance> instances;
@@ -184,6 +195,9 @@ class EmbreeScene {
     std::vector<RTCGeometryTy*> still;
     // The instance each further piece belongs to: Embree ids from instances.size() on.
     std::vector<uint32_t> piece_owner;
+    // What each instance's alpha test reads (alpha_texture; null for opaque shapes), by
+    // instance index: queries carry it to the filter, which knows only the instance id.
+    std::vector<const AlphaTexture*> alpha_textures;
     bool any_moving = false;
     // Paint seen by camera rays, and by indirect rays, in instance order, when
     // every paint instance is placed by the identity (strokes are built in world
