@@ -12,6 +12,7 @@
 #include "core/document/memory_budget.h"
 #include "core/document/scene_checks.h"
 #include "core/geometry/instance_placement.h"
+#include "core/npr/outlines/line_detector.h"
 
 #include <algorithm>
 #include <map>
@@ -229,6 +230,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   const std::optional<Shutter> shutter = shutter_states(desc);
 
   const auto remember = [&](std::shared_ptr<RenderScene> scene, size_t document_materials) {
+    scene->lines = make_line_setup(*scene);  // reads the world's bounds, so once it is in place
     last_desc_ = desc;
     last_ = scene;
     last_document_materials_ = document_materials;

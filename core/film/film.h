@@ -13,7 +13,7 @@
 #include "core/math/hash.h"
 #include "core/math/pixel_window.h"
 #include "core/integrator/first_hit.h"
-#include "core/npr/outlines/line_types.h"
+#include "core/world/line_types.h"
 
 #include <array>
 #include <atomic>

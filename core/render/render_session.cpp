@@ -59,7 +59,7 @@ void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet a
   divisor_ = std::max(divisor, 1);
   const int width = std::max((scene_->settings.width + divisor_ - 1) / divisor_, 1);
   const int height = std::max((scene_->settings.height + divisor_ - 1) / divisor_, 1);
-  lines_ = make_line_setup(*scene_, divisor_);
+  lines_ = line_setup_for_film(scene_->lines, divisor_);
   film_ = film_for(width, height, aovs, lines_.active);
   stats_ = {};
   first_pass_ = 0;

@@ -5,6 +5,7 @@
 
 #include "core/camera/camera.h"
 #include "core/document/desc.h"
+#include "core/world/line_setup.h"
 #include "core/world/world.h"
 
 #include <memory>
@@ -18,6 +19,7 @@ struct RenderScene {
   Camera camera;
   RenderSettings settings;
   OutlineDesc outlines;  // line types, widths and colours; any_line() false means no outline work
+  LineSetup lines;       // what the outlines mean for every sample at the image's resolution
 };
 
 // Whether anything moves while the shutter is open: a shape or the camera

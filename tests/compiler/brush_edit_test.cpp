@@ -97,7 +97,8 @@ TEST(BrushEdits, KeepTheStrokesBvhAndTopLevelAndRenderAsFromScratch) {
     EXPECT_EQ(&c.scene->world->geometry.bvh(strokes), ribbons);
     EXPECT_TRUE(c.scene->world->geometry.shares_top_level(last.scene->world->geometry))
         << "a new brush is placed in the last top level, not in a new one";
-    EXPECT_NE(c.scene->world->geometry.alpha_texture(strokes), last.scene->world->geometry.alpha_texture(strokes));
+    EXPECT_NE(c.scene->world->geometry.alpha_texture(strokes),
+              last.scene->world->geometry.alpha_texture(strokes));
 
     const RgbImage edited = testing::render_one_pass(c.scene);
     const CompileResult fresh = SceneCompiler().compile(scene, with_stand_ins());

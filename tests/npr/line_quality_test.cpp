@@ -151,11 +151,11 @@ TEST(LineQuality, SubPixelWidthsFadeInsteadOfLeavingDots) {
 TEST(LineQuality, WidthZeroDrawsNothing) {
   SceneDesc d = quad_in_front_of_quad(80, 40, 0.f);
   const Rendered r = render(d, 4);
-  EXPECT_FALSE(make_line_setup(*r.scene).active);
+  EXPECT_FALSE(r.scene->lines.active);
   EXPECT_EQ(total(r.aov(Aov::outline)), 0.0);
   d.outlines.width = 2.f;
   d.outlines.silhouette.width = 0.f;  // the only type on, at width 0
-  EXPECT_FALSE(make_line_setup(*render(d, 1).scene).active);
+  EXPECT_FALSE(render(d, 1).scene->lines.active);
 }
 
 // Mean line darkness (opacity over the whole image) of the same scene at

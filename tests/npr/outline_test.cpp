@@ -213,7 +213,7 @@ TEST(Outlines, NoLineTypeMeansNoLineWork) {
   const Rendered r = render(d, 2);
   EXPECT_FALSE(r.session->film().has_lines());
   // Camera rays plus at most two bounces with a shadow ray each: no stencil rays.
-  EXPECT_FALSE(make_line_setup(*r.scene).active);
+  EXPECT_FALSE(r.scene->lines.active);
   SceneDesc master_off = quad_in_front_of_quad(32, 16);
   master_off.outlines.enabled = false;
   EXPECT_FALSE(render(master_off, 1).session->film().has_lines());

@@ -206,10 +206,10 @@ TEST(MotionBlur, MovingScenesSampleTheirLinesInFull) {
   const CompileResult on = compile_scene(moving);
   ASSERT_TRUE(on.scene) << on.errors.front();
   EXPECT_TRUE(moves_during_shutter(*on.scene));
-  EXPECT_FALSE(make_line_setup(*on.scene).adaptive);
+  EXPECT_FALSE(on.scene->lines.adaptive);
   const CompileResult off = compile_scene(busy_scene());
   ASSERT_TRUE(off.scene) << off.errors.front();
-  EXPECT_TRUE(make_line_setup(*off.scene).adaptive);
+  EXPECT_TRUE(off.scene->lines.adaptive);
 }
 
 // Strokes on a moving sphere ride on it. The sphere is unlit red, its strokes take

@@ -121,7 +121,7 @@ float chain_coherence(float spread) {
   return std::log(kIncoherentSpread / spread) / std::log(kIncoherentSpread / kCoherentSpread);
 }
 
-LineSetup make_line_setup(const RenderScene& scene, int divisor) {
+LineSetup make_line_setup(const RenderScene& scene) {
   LineSetup s;
   const OutlineDesc& o = scene.outlines;
   if (!o.any_line() || !(o.width > 0.f)) return s;
@@ -161,8 +161,16 @@ LineSetup make_line_setup(const RenderScene& scene, int divisor) {
   const RenderSettings& rs = scene.settings;
   const float footprint =
       rs.filter == PixelFilter::box ? 2.f * rs.filter_radius : rs.filter_radius / 3.f * std::sqrt(12.f);
-  s.film_pixel = std::max(footprint, 1e-3f) * float(std::max(divisor, 1));
+  s.film_pixel = std::max(footprint, 1e-3f);
   s.follow = {o.in_reflections, kIncoherentSpread * s.nominal_radius_px * s.pixel_angle};
+  s.at_width = make_stencil(s, s.width_px);
+  return s;
+}
+
+LineSetup line_setup_for_film(const LineSetup& setup, int divisor) {
+  LineSetup s = setup;
+  if (!s.active || divisor <= 1) return s;
+  s.film_pixel = setup.film_pixel * float(divisor);
   s.at_width = make_stencil(s, s.width_px);
   return s;
 }

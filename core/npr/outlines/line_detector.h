@@ -6,7 +6,7 @@
 // How many stencil rays a sample traces is line_sampling.h's decision.
 #pragma once
 
-#include "core/npr/outlines/line_types.h"
+#include "core/world/line_types.h"
 #include "core/npr/outlines/perceived_surface.h"
 #include "core/integrator/path_tracer.h"
 #include "core/sampling/sampler.h"
@@ -19,44 +19,12 @@ namespace inkray {
 // samples only, which shows as isolated dots rather than a faint line.
 inline constexpr float kMinLineWidthPx = 1.f;
 
-// One sample's stencil: its radius, and what a ray at each reach adds per type.
-// Types of different widths share one stencil: it spans the widest, and a point
-// that falls inside a narrower type's disc is a uniform point of that disc, so
-// counting it with weight (R / r)^2 keeps every type's coverage unbiased.
-struct Stencil {
-  float radius = 0.f;                         // pixels
-  std::array<float, kLineTypeCount> reach{};  // a type's disc radius, pixels (0: not drawn here)
-  std::array<float, kLineTypeCount> weight{};
-};
-
-// What a scene's outline settings mean for every sample, worked out once per scene.
-struct LineSetup {
-  bool active = false;                        // any line type enabled with a width above 0
-  uint32_t enabled = 0;                       // bit per LineType
-  std::array<float, kLineTypeCount> width{};  // per-type width multipliers
-  float max_width = 0.f;                      // the largest of them: the stencil's radius
-  int quality = 1;                            // stencil rays per sample where lines are being found
-  bool adaptive = true;                       // line_sampling.h may trace fewer or more
-  float width_px = 0.f;                       // base width in pixels of this image (pixels and percent units)
-  bool world_width = false;                   // width in world units: depends on the centre's distance
-  float world_width_units = 0.f;              // that width, in world units, when world_width
-  float distance_falloff = 0.f;               // width *= (falloff_start / distance)^this beyond falloff_start
-  float falloff_start = 0.f;                  // 0: no falloff
-  float nominal_radius_px = 1.f;              // the widest type's stencil radius for a typical sample
-  float miss_distance = 1.f;  // distance used for world widths and falloff where the centre sees nothing
-  float crease_cos = 0.f, intersection_cos = 0.f;
-  float depth_jump = 0.f;   // relative distance jump of depth lines
-  float pixel_angle = 0.f;  // radians per pixel of the full image at its centre
-  float film_pixel = 1.f;   // width of a film pixel's sample footprint, in full-image pixels
-  FollowLimits follow;      // how far lines are followed through mirrors and glass
-  // The stencil of samples at width_px, the usual case: only world widths,
-  // falloff and width overrides make their own.
-  Stencil at_width;
-};
-
-// `divisor`: the film has one pixel per divisor x divisor image pixels (an
-// editor preview).
-LineSetup make_line_setup(const RenderScene& scene, int divisor = 1);
+// The line setup of a scene's view at its full resolution: the compiler's, stored as
+// RenderScene::lines. Reads the view (outlines, settings, camera) and the world's bounds.
+LineSetup make_line_setup(const RenderScene& scene);
+// The same setup for a film of one pixel per divisor x divisor image pixels (an editor
+// preview): wider film pixels, so another stencil at the nominal width.
+LineSetup line_setup_for_film(const LineSetup& setup, int divisor);
 
 // Sample dimensions of the stencil (see path_tracer.cpp for the others).
 inline constexpr uint32_t kOutlinePairBlock = 1u << 25;

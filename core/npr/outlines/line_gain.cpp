@@ -1,6 +1,6 @@
 #include "core/npr/outlines/line_gain.h"
 
-#include "core/npr/outlines/line_types.h"
+#include "core/world/line_types.h"
 
 #include <algorithm>
 #include <array>

@@ -20,7 +20,7 @@
 
 #include "core/math/pixel_window.h"
 #include "core/npr/outlines/line_detector.h"
-#include "core/npr/outlines/line_types.h"
+#include "core/world/line_types.h"
 
 #include <cstdint>
 #include <vector>

@@ -15,6 +15,7 @@
 
 #include "core/geometry/ray.h"
 #include "core/integrator/path_tracer.h"
+#include "core/world/line_setup.h"
 #include "core/world/render_scene.h"
 
 namespace inkray {
@@ -46,13 +47,6 @@ struct PerceivedSurface {
   std::array<uint32_t, kMaxPerceivedChain> chain_object{};
   std::array<Vec3, kMaxPerceivedChain> chain_dir{};
   float blur = 0.f;  // angular blur of the rough vertices followed, radians
-};
-
-// How far lines are followed through mirrors and glass, as the compiled line setup
-// has it (LineSetup::follow).
-struct FollowLimits {
-  bool specular = true;  // outlines.in_reflections: follow mirrors and glass at all
-  float max_blur = 0.f;  // roughness blur, radians, beyond which mirrors and glass are not followed
 };
 
 // Follows at most kMaxPerceivedChain specular vertices; u_mix resolves mix
