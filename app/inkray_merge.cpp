@@ -1,5 +1,6 @@
 // inkray-merge: adds partial renders (inkray-render --samples, --crop) up to the
 // image one machine would have rendered, or to a partial again.
+#include "core/compiler/compile_view.h"
 #include "core/document/animation.h"
 #include "core/document/json_io.h"
 #include "core/film/denoise.h"
@@ -193,8 +194,8 @@ int run(const MergeOptions& opt) {
     if (!desc.animation.empty()) desc = scene_at_frame(desc, desc.render.frame);
     ThreadBudget pool(opt.threads);
     if (opt.denoise) denoised = denoise(*merged.film, &pool);
-    switch (write_film_outputs(*merged.film, desc.render, desc.outlines, opt.output, opt.aovs, &error, &pool,
-                               {}, {}, denoised ? &denoised->image : nullptr)) {
+    switch (write_film_outputs(*merged.film, compile_resolve_settings(desc.render, desc.outlines), opt.output,
+                               opt.aovs, &error, &pool, {}, {}, denoised ? &denoised->image : nullptr)) {
       case OutputsWritten::all:
         break;
       case OutputsWritten::cancelled:

@@ -1,6 +1,7 @@
 // inkray-render: the headless renderer for final renders and render farms.
 #include "app/render_cli.h"
 #include "core/compiler/compile.h"
+#include "core/compiler/compile_view.h"
 #include "core/document/graph_reference.h"
 #include "core/document/json_io.h"
 #include "core/document/scene_hash.h"
@@ -270,8 +271,9 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
   if (time_limit > 0.0) {
     double filter_seconds = 0.0;
     if (!partial) {
-      filter_seconds = 1.25 * estimate_painterly_seconds(desc.render, desc.render.width, desc.render.height,
-                                                         &session.pool());
+      filter_seconds =
+          1.25 * estimate_painterly_seconds(compile_resolve_settings(desc.render, desc.outlines),
+                                            desc.render.width, desc.render.height, &session.pool());
       if (opt.denoise)
         filter_seconds += 1.25 * estimate_denoise_seconds(window.width(), window.height(), &session.pool());
     }

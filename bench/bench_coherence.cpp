@@ -56,7 +56,7 @@ FrameImages render_frame(SceneCompiler& compiler, SceneDesc desc, double frame, 
   AovSet aovs;
   aovs.add(Aov::depth);
   aovs.add(Aov::object_id);
-  if (c.scene->outlines.any_line()) aovs.add(Aov::outline);
+  if (c.scene->lines.active) aovs.add(Aov::outline);
   RenderSession session(o.threads);
   session.set_scene(c.scene, aovs);
   render_batch(session, {o.spp, 0.0});

@@ -63,7 +63,7 @@ double rmse_linear(const RgbImage& a, const RgbImage& b) {
 }
 
 RgbImage reference_image(const Options& opt, const std::shared_ptr<const RenderScene>& scene) {
-  const auto& s = scene->settings;
+  const auto& s = scene->sampling;
   std::filesystem::create_directories(opt.cache);
   const auto file = opt.cache / (opt.scene.stem().string() + "-" + std::to_string(s.width) + "x" +
                                  std::to_string(s.height) + "-" + std::to_string(opt.reference_spp) +
@@ -91,7 +91,7 @@ RgbImage reference_image(const Options& opt, const std::shared_ptr<const RenderS
 // random scene point. Returns rays per second.
 double bare_embree_rate(const RenderScene& scene, int threads, double seconds) {
   ThreadBudget pool(threads);
-  const int w = scene.settings.width, h = scene.settings.height;
+  const int w = scene.sampling.width, h = scene.sampling.height;
   std::vector<uint64_t> rays(size_t(pool.size()), 0);
   const auto t0 = Clock::now();
   uint32_t pass = 0;

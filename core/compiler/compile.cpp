@@ -9,6 +9,7 @@
 #include "core/compiler/compile_materials.h"
 #include "core/compiler/compile_objects.h"
 #include "core/compiler/compile_strokes.h"
+#include "core/compiler/compile_view.h"
 #include "core/document/memory_budget.h"
 #include "core/document/scene_checks.h"
 #include "core/geometry/instance_placement.h"
@@ -68,8 +69,8 @@ std::optional<Shutter> shutter_states(const SceneDesc& desc) {
 
 // What every compiled scene of the document carries whatever changed.
 void set_view(const SceneDesc& desc, const std::optional<Shutter>& shutter, RenderScene& scene) {
-  scene.settings = desc.render;
-  scene.outlines = desc.outlines;
+  scene.sampling = compile_sample_settings(desc.render);
+  scene.resolve = compile_resolve_settings(desc.render, desc.outlines);
   const RenderSettings& r = desc.render;
   // The frame's own instant in the shutter, which rays without a time of their own see.
   const float frame_time = r.motion_blur() ? -r.shutter_open / (r.shutter_close - r.shutter_open) : 0.f;
@@ -230,7 +231,8 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   const std::optional<Shutter> shutter = shutter_states(desc);
 
   const auto remember = [&](std::shared_ptr<RenderScene> scene, size_t document_materials) {
-    scene->lines = make_line_setup(*scene);  // reads the world's bounds, so once it is in place
+    scene->lines =
+        make_line_setup(desc.outlines, *scene);  // reads the world's bounds, so once it is in place
     last_desc_ = desc;
     last_ = scene;
     last_document_materials_ = document_materials;
@@ -245,7 +247,7 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
     // patches of a new threshold.
     auto scene = std::make_shared<RenderScene>(*last_);
     set_view(desc, shutter, *scene);
-    if (!same_crease_patches(last_->outlines, desc.outlines)) {
+    if (!same_crease_patches(last_desc_->outlines, desc.outlines)) {
       auto world = std::make_shared<World>(*last_->world);
       set_crease_patches(desc.outlines, placed_, *world, assets_);
       scene->world = std::move(world);
@@ -473,7 +475,7 @@ bool SceneCompiler::reuse_objects(const SceneDesc& desc, StageSet changes, bool 
   }
   for (RenderObject& o : world.objects)
     o.lines = combine_lines(desc.materials[o.material].lines, desc.objects[o.source].lines);
-  if (!same_crease_patches(last_->outlines, desc.outlines))
+  if (!same_crease_patches(last_desc_->outlines, desc.outlines))
     set_crease_patches(desc.outlines, placed_, world, assets_);
   if (moves.empty()) {
     world.scene_center = last_->world->scene_center;

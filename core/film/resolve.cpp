@@ -12,7 +12,7 @@ namespace {
 
 // The filter radius is given for a 1080-line image, so the look holds at any
 // resolution: `full_height` is the image's, or the full image's for a crop.
-RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadBudget* pool,
+RgbImage apply_painterly(RgbImage image, const ResolveSettings& settings, ThreadBudget* pool,
                          const Cancel& cancel, int full_height) {
   if (settings.painterly == PainterlyFilter::none) return image;
   PainterlyFilterParams params;
@@ -25,17 +25,17 @@ RgbImage apply_painterly(RgbImage image, const RenderSettings& settings, ThreadB
 
 }  // namespace
 
-RgbImage resolve_base(const Film& film, const RenderSettings& settings, ThreadBudget* pool,
+RgbImage resolve_base(const Film& film, const ResolveSettings& settings, ThreadBudget* pool,
                       const Cancel& cancel) {
   return apply_painterly(film.resolve(), settings, pool, cancel, film.height());
 }
 
-RgbImage resolve_base(RgbImage radiance, const RenderSettings& settings, int full_height, ThreadBudget* pool,
+RgbImage resolve_base(RgbImage radiance, const ResolveSettings& settings, int full_height, ThreadBudget* pool,
                       const Cancel& cancel) {
   return apply_painterly(std::move(radiance), settings, pool, cancel, full_height);
 }
 
-bool same_base(const RenderSettings& a, const RenderSettings& b) {
+bool same_base(const ResolveSettings& a, const ResolveSettings& b) {
   if (a.painterly != b.painterly) return false;
   return a.painterly == PainterlyFilter::none ||
          (a.painterly_radius == b.painterly_radius && a.painterly_sharpness == b.painterly_sharpness);
@@ -56,7 +56,7 @@ FilmLines gather_lines(const Film& film) {
 }
 
 // Line colours go over the filtered image, so the filter never smears them.
-void composite_lines(const FilmLines& lines, const OutlineDesc& outlines, const DisplayEncoding& display,
+void composite_lines(const FilmLines& lines, const ResolveSettings& settings, const DisplayEncoding& display,
                      RgbImage& image) {
   if (image.width != lines.width || image.height != lines.height) return;
   const DisplayMapping mapping(display);
@@ -69,7 +69,7 @@ void composite_lines(const FilmLines& lines, const OutlineDesc& outlines, const 
     Color shown(0.f);
     bool drawn = false;
     for (int t = 0; t < kLineTypeCount; ++t) {
-      const LineStyleDesc& style = line_style(outlines, LineType(t));
+      const LineLook& style = settings.lines[size_t(t)];
       const float alpha = style.opacity * line_opacity(m.coverage[size_t(t)]);
       if (alpha <= 0.f) continue;
       if (!drawn) shown = mapping.to_display(c), drawn = true;
@@ -80,22 +80,22 @@ void composite_lines(const FilmLines& lines, const OutlineDesc& outlines, const 
   }
 }
 
-RgbImage resolve_final(const Film& film, const RenderSettings& settings, const OutlineDesc& outlines,
-                       const DisplayEncoding& display, ThreadBudget* pool, const Cancel& cancel) {
+RgbImage resolve_final(const Film& film, const ResolveSettings& settings, const DisplayEncoding& display,
+                       ThreadBudget* pool, const Cancel& cancel) {
   RgbImage image = resolve_base(film, settings, pool, cancel);
-  if (!image.pixels.empty()) composite_lines(gather_lines(film), outlines, display, image);  // else cut short
+  if (!image.pixels.empty()) composite_lines(gather_lines(film), settings, display, image);  // else cut short
   return image;
 }
 
-RgbImage resolve_final(const Film& film, RgbImage radiance, const RenderSettings& settings,
-                       const OutlineDesc& outlines, const DisplayEncoding& display, ThreadBudget* pool,
-                       const Cancel& cancel) {
+RgbImage resolve_final(const Film& film, RgbImage radiance, const ResolveSettings& settings,
+                       const DisplayEncoding& display, ThreadBudget* pool, const Cancel& cancel) {
   RgbImage image = resolve_base(std::move(radiance), settings, film.height(), pool, cancel);
-  if (!image.pixels.empty()) composite_lines(gather_lines(film), outlines, display, image);
+  if (!image.pixels.empty()) composite_lines(gather_lines(film), settings, display, image);
   return image;
 }
 
-double estimate_painterly_seconds(const RenderSettings& settings, int width, int height, ThreadBudget* pool) {
+double estimate_painterly_seconds(const ResolveSettings& settings, int width, int height,
+                                  ThreadBudget* pool) {
   if (settings.painterly == PainterlyFilter::none || width <= 0 || height <= 0) return 0.0;
   // A crop with edges in both directions, so the anisotropic filter's ellipses take
   // every shape; a pixel's cost depends on the radius, hardly on the picture.

@@ -24,15 +24,15 @@ namespace inkray {
 // rows run within `pool`'s threads when given, else in the caller's arena; the
 // result is the same either way. When `cancel` cuts the filter short, the result
 // is an empty image.
-RgbImage resolve_base(const Film& film, const RenderSettings& settings, ThreadBudget* pool = nullptr,
+RgbImage resolve_base(const Film& film, const ResolveSettings& settings, ThreadBudget* pool = nullptr,
                       const Cancel& cancel = {});
 // The same over a mean-radiance image of the film other than its own mean (the
 // denoiser's, core/film/denoise.h); `full_height` scales the filter as the film's height does.
-RgbImage resolve_base(RgbImage radiance, const RenderSettings& settings, int full_height,
+RgbImage resolve_base(RgbImage radiance, const ResolveSettings& settings, int full_height,
                       ThreadBudget* pool = nullptr, const Cancel& cancel = {});
 // Whether resolve_base gives one film the same image under both settings, so a
 // cached one serves (only line settings changed).
-bool same_base(const RenderSettings& a, const RenderSettings& b);
+bool same_base(const ResolveSettings& a, const ResolveSettings& b);
 // The pixels of a film that have lines, with their mean line samples (a few
 // percent of the image): gathered once per state of the film, so compositing
 // again for another display, line colour or opacity touches only them.
@@ -46,7 +46,7 @@ FilmLines gather_lines(const Film& film);
 // place; pixels without lines are left as they are, and an image of another size
 // is not touched. A new exposure or view transform composites again over a copy
 // of a cached base.
-void composite_lines(const FilmLines& lines, const OutlineDesc& outlines, const DisplayEncoding& display,
+void composite_lines(const FilmLines& lines, const ResolveSettings& settings, const DisplayEncoding& display,
                      RgbImage& image);
 
 // resolve_base, then composite_lines for the display the image will be shown or
@@ -54,22 +54,21 @@ void composite_lines(const FilmLines& lines, const OutlineDesc& outlines, const 
 // the standard view (encode_srgb8), the default. The settings may differ from those
 // the film was rendered with: that is how a line colour or filter edit shows without
 // a re-render. Empty when `cancel` cut the painterly filter short.
-RgbImage resolve_final(const Film& film, const RenderSettings& settings, const OutlineDesc& outlines,
+RgbImage resolve_final(const Film& film, const ResolveSettings& settings, const DisplayEncoding& display = {},
+                       ThreadBudget* pool = nullptr, const Cancel& cancel = {});
+// resolve_final with `radiance` in place of the film's mean: the lines still come from the film.
+RgbImage resolve_final(const Film& film, RgbImage radiance, const ResolveSettings& settings,
                        const DisplayEncoding& display = {}, ThreadBudget* pool = nullptr,
                        const Cancel& cancel = {});
-// resolve_final with `radiance` in place of the film's mean: the lines still come from the film.
-RgbImage resolve_final(const Film& film, RgbImage radiance, const RenderSettings& settings,
-                       const OutlineDesc& outlines, const DisplayEncoding& display = {},
-                       ThreadBudget* pool = nullptr, const Cancel& cancel = {});
 // Seconds the painterly filter will take on a width x height image, timed on a
 // 64 x 64 crop and scaled by the pixel count; 0 without a filter. A final render
 // with a time limit stops early enough to leave it this time.
-double estimate_painterly_seconds(const RenderSettings& settings, int width, int height,
+double estimate_painterly_seconds(const ResolveSettings& settings, int width, int height,
                                   ThreadBudget* pool = nullptr);
 
 inline RgbImage resolve_final(const Film& film, const RenderScene& scene, const DisplayEncoding& display = {},
                               ThreadBudget* pool = nullptr, const Cancel& cancel = {}) {
-  return resolve_final(film, scene.settings, scene.outlines, display, pool, cancel);
+  return resolve_final(film, scene.resolve, display, pool, cancel);
 }
 
 }  // namespace inkray

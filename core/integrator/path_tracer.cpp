@@ -132,7 +132,7 @@ void add_emission(const RenderScene& scene, const Bounce& b, const Material& mat
 // Next-event estimation and a sampled bounce through the material's BSDF; false ends the path.
 bool continue_by_bsdf(const RenderScene& scene, const Sampler& sampler, const Bounce& b,
                       const Material& material, PathState& st, PathResult& result) {
-  if (b.depth >= scene.settings.max_depth) return false;
+  if (b.depth >= scene.sampling.max_depth) return false;
   const std::optional<Bsdf> bsdf = material_bsdf(material, b.si);
   if (!bsdf) return false;
   const Vec2 u_choice = sampler.get_pair(b.pairs);  // x: which light, y: which lobe
@@ -154,7 +154,7 @@ bool shade_toon(const RenderScene& scene, const Sampler& sampler, const Bounce& 
   result.radiance += st.beta * shade.radiance;
   if (st.specular_chain && result.band < 0.f) result.band = shade.band;
   // Indirect light adds to the bands; the light the bands show is not gathered again.
-  if (!st.specular_chain || !toon.receive_indirect || b.depth >= scene.settings.max_depth) return false;
+  if (!st.specular_chain || !toon.receive_indirect || b.depth >= scene.sampling.max_depth) return false;
   const Frame frame = Frame::from_z(b.ns);
   const Bsdf lambert = *material_bsdf(material, b.si);
   if (!scatter(sampler, lambert, frame, frame.to_local(b.wo), b.si, b.ref, sampler.get_pair(b.pairs).y,

@@ -29,10 +29,10 @@ std::filesystem::path raw_image_path(const std::filesystem::path& image) {
   return p;
 }
 
-OutputsWritten write_film_outputs(const Film& film, const RenderSettings& settings,
-                                  const OutlineDesc& outlines, const std::filesystem::path& image,
-                                  const std::vector<AovFile>& aovs, std::string* error, ThreadBudget* pool,
-                                  const Cancel& cancel, const PixelWindow& crop, const RgbImage* denoised) {
+OutputsWritten write_film_outputs(const Film& film, const ResolveSettings& settings,
+                                  const std::filesystem::path& image, const std::vector<AovFile>& aovs,
+                                  std::string* error, ThreadBudget* pool, const Cancel& cancel,
+                                  const PixelWindow& crop, const RgbImage* denoised) {
   constexpr OutputsWritten kFailed = OutputsWritten::failed;
   OutputSet outputs;
   std::string bytes;
@@ -42,14 +42,14 @@ OutputsWritten write_film_outputs(const Film& film, const RenderSettings& settin
   };
   // Lines are composited for the display a PNG is encoded with (exposure 0, standard
   // view); a linear file holds the same pixels, so viewing it that way shows them too.
-  RgbImage final_image = resolve_final(film, settings, outlines, kFileDisplay, pool, cancel);
+  RgbImage final_image = resolve_final(film, settings, kFileDisplay, pool, cancel);
   if (final_image.pixels.empty()) return cancelled();
   if (denoised) {
     const std::filesystem::path raw = raw_image_path(image);
     if (!encode_image(raw, crop_image(std::move(final_image), crop), &bytes, error) ||
         !outputs.stage(raw, bytes, error))
       return kFailed;
-    final_image = resolve_final(film, *denoised, settings, outlines, kFileDisplay, pool, cancel);
+    final_image = resolve_final(film, *denoised, settings, kFileDisplay, pool, cancel);
     if (final_image.pixels.empty()) return cancelled();
   }
   if (!encode_image(image, crop_image(std::move(final_image), crop), &bytes, error) ||
@@ -66,8 +66,8 @@ OutputsWritten write_film_outputs(const Film& film, const RenderSettings& settin
 OutputsWritten write_render_outputs(RenderSession& session, const std::filesystem::path& image,
                                     const std::vector<AovFile>& aovs, std::string* error,
                                     const Cancel& cancel, const PixelWindow& crop, const RgbImage* denoised) {
-  return write_film_outputs(session.film(), session.scene().settings, session.scene().outlines, image, aovs,
-                            error, &session.pool(), cancel, crop, denoised);
+  return write_film_outputs(session.film(), session.scene().resolve, image, aovs, error, &session.pool(),
+                            cancel, crop, denoised);
 }
 
 bool write_partial_file(const Film& film, const PartialInfo& info, const std::filesystem::path& file,

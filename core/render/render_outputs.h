@@ -42,11 +42,10 @@ OutputsWritten write_render_outputs(RenderSession& session, const std::filesyste
                                     const Cancel& cancel = {}, const PixelWindow& crop = {},
                                     const RgbImage* denoised = nullptr);
 // The same for a film without its session (inkray-merge), resolved with these
-// settings and outlines exactly as a session's film would be.
-OutputsWritten write_film_outputs(const Film& film, const RenderSettings& settings,
-                                  const OutlineDesc& outlines, const std::filesystem::path& image,
-                                  const std::vector<AovFile>& aovs, std::string* error,
-                                  ThreadBudget* pool = nullptr, const Cancel& cancel = {},
+// compiled settings exactly as a session's film would be.
+OutputsWritten write_film_outputs(const Film& film, const ResolveSettings& settings,
+                                  const std::filesystem::path& image, const std::vector<AovFile>& aovs,
+                                  std::string* error, ThreadBudget* pool = nullptr, const Cancel& cancel = {},
                                   const PixelWindow& crop = {}, const RgbImage* denoised = nullptr);
 // A partial file (film_partial.h) of info.window of `film`, replaced atomically.
 bool write_partial_file(const Film& film, const PartialInfo& info, const std::filesystem::path& file,

@@ -11,7 +11,7 @@ namespace {
 
 // Offset of a sample from the pixel centre, importance-sampled from the pixel
 // filter so every sample has weight 1 and stays in its own pixel's sums.
-Vec2 filter_offset(const RenderSettings& settings, Vec2 u) {
+Vec2 filter_offset(const SampleSettings& settings, Vec2 u) {
   const float r = settings.filter_radius;
   if (settings.filter == PixelFilter::box) return (2.f * u - Vec2(1.f)) * r;
   // Gaussian with sigma = r / 3 (Box-Muller); the rare tail beyond r is clamped.
@@ -30,11 +30,11 @@ struct CameraSample {
 CameraSample camera_sample(const RenderScene& scene, const Sampler& sampler, int x, int y, float scale) {
   CameraSample s;
   s.film_pos =
-      (Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.settings, sampler.get_pair(0))) * scale;
+      (Vec2(float(x) + 0.5f, float(y) + 0.5f) + filter_offset(scene.sampling, sampler.get_pair(0))) * scale;
   s.lens = sampler.get_pair(1);
   // The sample's instant of the shutter, drawn only while it is open for a time:
   // without motion blur every sample stream is as it was.
-  const float time = scene.settings.motion_blur() ? sampler.get_time() : 0.f;
+  const float time = scene.sampling.motion_blur ? sampler.get_time() : 0.f;
   s.ray = scene.camera.generate_ray(s.film_pos, s.lens, time);
   return s;
 }
@@ -57,8 +57,8 @@ RenderSession::RenderSession(int threads) : pool_(threads), worker_rays_(size_t(
 void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet aovs, int divisor) {
   scene_ = std::move(scene);
   divisor_ = std::max(divisor, 1);
-  const int width = std::max((scene_->settings.width + divisor_ - 1) / divisor_, 1);
-  const int height = std::max((scene_->settings.height + divisor_ - 1) / divisor_, 1);
+  const int width = std::max((scene_->sampling.width + divisor_ - 1) / divisor_, 1);
+  const int height = std::max((scene_->sampling.height + divisor_ - 1) / divisor_, 1);
   lines_ = line_setup_for_film(scene_->lines, divisor_);
   film_ = film_for(width, height, aovs, lines_.active);
   stats_ = {};
@@ -205,7 +205,7 @@ bool RenderSession::render_pass() {
 
 LineSample RenderSession::trace_lines_only(int x, int y, uint32_t pass, int count, uint64_t* rays) const {
   const RenderScene& scene = *scene_;
-  const uint32_t seed = uint32_t(scene.settings.seed);
+  const uint32_t seed = scene.sampling.seed;
   const Sampler sampler(uint32_t(x), uint32_t(y), pass, seed);
   const CameraSample cs = camera_sample(scene, sampler, x, y, float(divisor_));
   const PrimaryHit primary = camera_hit(scene, cs.ray);
@@ -226,8 +226,8 @@ void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
   const float scale = float(divisor_);
   const Camera& camera = scene.camera;
   const bool want_first_hit = film_->aovs().any_first_hit();
-  const float clamp = scene.settings.clamp;
-  const uint32_t seed = uint32_t(scene.settings.seed);
+  const float clamp = scene.sampling.clamp;
+  const uint32_t seed = scene.sampling.seed;
   const size_t width = size_t(film_->width());
   uint64_t rays = 0;
   for (int y = y0; y < y1; ++y) {
@@ -274,7 +274,7 @@ void RenderSession::render_tile(int tile, int worker, uint32_t pass) {
 
 void RenderSession::replay_tile(int tile, uint32_t pass) {
   const PixelWindow t = tile_window(tile), r = active_window();
-  const uint32_t seed = uint32_t(scene_->settings.seed);
+  const uint32_t seed = scene_->sampling.seed;
   const size_t width = size_t(film_->width());
   uint64_t rays = 0;  // not counted: the session's statistics are of its own passes
   const auto replay = [&](int x, int y) {
@@ -354,7 +354,7 @@ void RenderSession::continue_from(uint32_t first, uint32_t next, const std::vect
     } else {
       pass = replay_decisions(next);
     }
-    const uint32_t seed = uint32_t(scene_->settings.seed);
+    const uint32_t seed = scene_->sampling.seed;
     if (pass < next)
       pool_.parallel_for(r.height(), [&](int row, int) {
         const int y = r.y0 + row;

@@ -42,15 +42,15 @@ const RgbImage* ViewportResolver::resolve(const Film& film, const RenderScene& s
   if (denoise != base_denoised_) invalidate(ResolveChange::denoise_toggled);
   // Only an edit of the resolve stage changes the settings under the same samples; a
   // line edit composites the cached base again, a filter edit filters anew.
-  if (stale_ == Stale::lines && !same_base(base_settings_, scene.settings)) stale_ = Stale::base;
+  if (stale_ == Stale::lines && !same_base(base_settings_, scene.resolve)) stale_ = Stale::base;
   if (stale_ == Stale::base) {
     RgbImage radiance = final_radiance(film, denoise, progress, pool, cancel);
     if (radiance.pixels.empty()) return nullptr;  // cut short: the newer document is waiting
-    base_ = resolve_base(std::move(radiance), scene.settings, film.height(), &pool, cancel);
+    base_ = resolve_base(std::move(radiance), scene.resolve, film.height(), &pool, cancel);
     if (base_.pixels.empty()) return nullptr;
     base_denoised_ = denoise;
     lines_ = gather_lines(film);
-    base_settings_ = scene.settings;
+    base_settings_ = scene.resolve;
     stale_ = Stale::lines;
   }
   if (!film.has_lines()) {
@@ -60,7 +60,7 @@ const RgbImage* ViewportResolver::resolve(const Film& film, const RenderScene& s
   if (!(resolved_for_ == display)) invalidate(ResolveChange::display);
   if (stale_ == Stale::lines) {
     resolved_ = base_;  // reuses its pixels' storage
-    composite_lines(lines_, scene.outlines, display, resolved_);
+    composite_lines(lines_, scene.resolve, display, resolved_);
     resolved_for_ = display;
     stale_ = Stale::none;
   }

@@ -58,7 +58,7 @@ class ViewportResolver {
   // them again over the same base (core/film/resolve.h), without filtering again.
   RgbImage base_;
   FilmLines lines_;
-  RenderSettings base_settings_;
+  ResolveSettings base_settings_;
   bool base_denoised_ = false;
   // The base with the lines composited for `resolved_for_` (empty without lines).
   RgbImage resolved_;

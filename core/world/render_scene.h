@@ -1,11 +1,12 @@
 // RenderScene: the immutable, compiled form of a SceneDesc (docs/architecture.md,
 // "From JSON to pixels", "World and view"): a shared World and the view of it
-// (camera, settings). Render threads only read it, through a shared_ptr to const.
+// (camera, compiled settings and line setup). Render threads only read it, through a shared_ptr to const.
 #pragma once
 
 #include "core/camera/camera.h"
 #include "core/document/desc.h"
 #include "core/world/line_setup.h"
+#include "core/world/view_settings.h"
 #include "core/world/world.h"
 
 #include <memory>
@@ -17,15 +18,15 @@ namespace inkray {
 struct RenderScene {
   std::shared_ptr<const World> world = std::make_shared<const World>();
   Camera camera;
-  RenderSettings settings;
-  OutlineDesc outlines;  // line types, widths and colours; any_line() false means no outline work
-  LineSetup lines;       // what the outlines mean for every sample at the image's resolution
+  SampleSettings sampling;  // what every sample reads of the render settings
+  ResolveSettings resolve;  // the painterly filter and the line colours, read by the resolve
+  LineSetup lines;          // what the outlines mean for every sample at the image's resolution
 };
 
 // Whether anything moves while the shutter is open: a shape or the camera
 // (docs/architecture.md, "Motion blur").
 inline bool moves_during_shutter(const RenderScene& scene) {
-  return scene.settings.motion_blur() && (scene.world->geometry.any_moving() || scene.camera.moves());
+  return scene.sampling.motion_blur && (scene.world->geometry.any_moving() || scene.camera.moves());
 }
 
 // The smooth patch of triangle `prim` of an object at the scene's crease threshold,

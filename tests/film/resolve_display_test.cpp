@@ -2,6 +2,7 @@
 // covered pixel over a light brighter than white is part line colour, not clipped
 // white; a fully covered one shows the line colour at any exposure and view; the
 // raw view at 0 EV is the linear compositing of radiance and line colour.
+#include "core/compiler/compile_view.h"
 #include "core/film/resolve.h"
 #include "core/image/image_io.h"
 #include "core/render/display_encode.h"
@@ -49,7 +50,7 @@ std::unique_ptr<Film> film_with_line(const Color& radiance, float alpha, int wid
 TEST(ResolveDisplay, HalfCoveredLineOverAnEmitterIsHalfLineColour) {
   const auto film_ptr = film_with_line(Color(20.f), 0.5f);
   const Film& film = *film_ptr;
-  const RgbImage image = resolve_final(film, RenderSettings{}, black_silhouettes());
+  const RgbImage image = resolve_final(film, compile_resolve_settings({}, black_silhouettes()));
   const std::vector<uint8_t> png = encode_srgb8(image);
   for (int k = 0; k < 3; ++k) {
     EXPECT_NEAR(int(png[size_t(k)]), 188, 1) << "channel " << k;
@@ -73,7 +74,7 @@ TEST(ResolveDisplay, HalfCoveredLineIsHalfWayOnTheDisplayAtAnyExposure) {
       SCOPED_TRACE(std::string(kViewTransformNames[size_t(t)]) + " " + std::to_string(exposure));
       const DisplayEncoding display{exposure, t};
       const DisplayMapping mapping(display);
-      const RgbImage image = resolve_final(film, RenderSettings{}, outlines, display);
+      const RgbImage image = resolve_final(film, compile_resolve_settings({}, outlines), display);
       const Color shown = mapping.to_display(image.at(0, 0));
       const Color expected = glm::mix(mapping.to_display(Color(20.f)), outlines.silhouette.color, 0.5f);
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(shown[k], expected[k], 1e-5f);
@@ -91,7 +92,7 @@ TEST(ResolveDisplay, FullCoverageShowsExactlyTheLineColour) {
       for (float exposure : {-2.f, 0.f, 1.5f}) {
         SCOPED_TRACE(std::string(kViewTransformNames[size_t(t)]) + " " + std::to_string(exposure));
         const DisplayEncoding display{exposure, t};
-        const RgbImage image = resolve_final(film, RenderSettings{}, outlines, display);
+        const RgbImage image = resolve_final(film, compile_resolve_settings({}, outlines), display);
         const Color shown = DisplayMapping(display).to_display(image.at(0, 0));
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(shown[k], outlines.silhouette.color[k], 2e-6f);
       }
@@ -100,7 +101,7 @@ TEST(ResolveDisplay, FullCoverageShowsExactlyTheLineColour) {
   // Standard at 0 EV, the PNG's display: the very bytes of the line colour.
   const auto film_ptr = film_with_line(Color(20.f), 1.f);
   const Film& film = *film_ptr;
-  const RgbImage image = resolve_final(film, RenderSettings{}, outlines);
+  const RgbImage image = resolve_final(film, compile_resolve_settings({}, outlines));
   EXPECT_EQ(image.at(0, 0), outlines.silhouette.color);
   const RgbImage line{1, 1, {outlines.silhouette.color}};
   const std::vector<uint8_t> png = encode_srgb8(image), expected = encode_srgb8(line);
@@ -149,9 +150,9 @@ TEST(ResolveDisplay, RawViewIsTheLinearComposite) {
       film.add_lines(x, y, s);
     }
   }
-  const RgbImage base = resolve_base(film, RenderSettings{});
+  const RgbImage base = resolve_base(film, ResolveSettings{});
   const RgbImage raw =
-      resolve_final(film, RenderSettings{}, outlines, DisplayEncoding{0.f, ViewTransform::raw});
+      resolve_final(film, compile_resolve_settings({}, outlines), DisplayEncoding{0.f, ViewTransform::raw});
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       ASSERT_EQ(raw.at(x, y), linear_composite(film.line_mean(x, y), outlines, base.at(x, y)))
@@ -163,17 +164,17 @@ TEST(ResolveDisplay, RawViewIsTheLinearComposite) {
 TEST(ResolveDisplay, CompositeOverTheBaseIsTheFinalImage) {
   const auto film_ptr = film_with_line(Color(3.f, 0.5f, 8.f), 0.6f, 4);
   const Film& film = *film_ptr;
-  RenderSettings settings;
+  ResolveSettings settings = compile_resolve_settings({}, black_silhouettes());
   settings.painterly = PainterlyFilter::kuwahara;
   const RgbImage base = resolve_base(film, settings);
   for (const DisplayEncoding& d : {DisplayEncoding{}, DisplayEncoding{1.f, ViewTransform::filmic}}) {
     RgbImage a = base;
-    composite_lines(gather_lines(film), black_silhouettes(), d, a);
-    const RgbImage b = resolve_final(film, settings, black_silhouettes(), d);
+    composite_lines(gather_lines(film), settings, d, a);
+    const RgbImage b = resolve_final(film, settings, d);
     EXPECT_EQ(a.pixels, b.pixels);
   }
   EXPECT_TRUE(same_base(settings, settings));
-  RenderSettings wider = settings;
+  ResolveSettings wider = settings;
   wider.painterly_radius *= 2.f;
   EXPECT_FALSE(same_base(settings, wider));
 }

@@ -1,6 +1,7 @@
 // Outlines on synthetic scenes: line pixels exactly where the silhouette is,
 // the flush-light case, width scaling, resolution independence, lines in
 // mirrors, overrides and the zero-cost path when no line type is on.
+#include "core/compiler/compile_view.h"
 #include "core/film/resolve.h"
 #include "core/npr/outlines/line_detector.h"
 #include "support/render_helpers.h"
@@ -191,9 +192,10 @@ TEST(Outlines, ColourIsAppliedAtResolveWithoutRetracing) {
   const int x = int(right_edge_x(*r.scene)), y = 40;
   EXPECT_EQ(resolve_final(r.session->film(), *r.scene).at(x, y), Color(1.f, 0.f, 0.f));
   // A colour edit only needs a new resolve of the same film.
-  OutlineDesc recoloured = r.scene->outlines;
+  OutlineDesc recoloured = d.outlines;
   recoloured.silhouette.color = Color(0.f, 0.f, 1.f);
-  EXPECT_EQ(resolve_final(r.session->film(), r.scene->settings, recoloured).at(x, y), Color(0.f, 0.f, 1.f));
+  EXPECT_EQ(resolve_final(r.session->film(), compile_resolve_settings(d.render, recoloured)).at(x, y),
+            Color(0.f, 0.f, 1.f));
 }
 
 TEST(Outlines, ObjectOverrideColourWins) {

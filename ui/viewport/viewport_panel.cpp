@@ -344,7 +344,7 @@ void ViewportPanel::handle_input(EditorState& state, const ProgressiveRenderer& 
       // A click, not a drag: pick, or with Ctrl focus on what is under the cursor.
       if (auto compiled = renderer.scene()) {
         const Vec2 f = fraction(press_);
-        const float iw = float(compiled->settings.width), ih = float(compiled->settings.height);
+        const float iw = float(compiled->sampling.width), ih = float(compiled->sampling.height);
         const PickResult hit =
             pick(*compiled, Camera(scene.camera, int(iw), int(ih)), Vec2(f.x * iw, f.y * ih));
         if (io.KeyCtrl) {

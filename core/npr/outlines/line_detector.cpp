@@ -121,9 +121,8 @@ float chain_coherence(float spread) {
   return std::log(kIncoherentSpread / spread) / std::log(kIncoherentSpread / kCoherentSpread);
 }
 
-LineSetup make_line_setup(const RenderScene& scene) {
+LineSetup make_line_setup(const OutlineDesc& o, const RenderScene& scene) {
   LineSetup s;
-  const OutlineDesc& o = scene.outlines;
   if (!o.any_line() || !(o.width > 0.f)) return s;
   for (int t = 0; t < kLineTypeCount; ++t) {
     const LineStyleDesc& style = line_style(o, LineType(t));
@@ -158,7 +157,7 @@ LineSetup make_line_setup(const RenderScene& scene) {
   s.pixel_angle = 1.f / scene.camera.world_to_pixels(1.f, 1.f);
   // The film pixel's samples spread over a box 2 * filter_radius wide, or a
   // Gaussian of sigma filter_radius / 3 (a box sqrt(12) sigma wide has its variance).
-  const RenderSettings& rs = scene.settings;
+  const SampleSettings& rs = scene.sampling;
   const float footprint =
       rs.filter == PixelFilter::box ? 2.f * rs.filter_radius : rs.filter_radius / 3.f * std::sqrt(12.f);
   s.film_pixel = std::max(footprint, 1e-3f);

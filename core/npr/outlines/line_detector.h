@@ -19,9 +19,10 @@ namespace inkray {
 // samples only, which shows as isolated dots rather than a faint line.
 inline constexpr float kMinLineWidthPx = 1.f;
 
-// The line setup of a scene's view at its full resolution: the compiler's, stored as
-// RenderScene::lines. Reads the view (outlines, settings, camera) and the world's bounds.
-LineSetup make_line_setup(const RenderScene& scene);
+// What `outlines` mean for the samples of `scene`'s view at its full resolution: the
+// compiler's, stored as RenderScene::lines. Reads the view's camera and sample settings
+// and the world's bounds.
+LineSetup make_line_setup(const OutlineDesc& outlines, const RenderScene& scene);
 // The same setup for a film of one pixel per divisor x divisor image pixels (an editor
 // preview): wider film pixels, so another stencil at the nominal width.
 LineSetup line_setup_for_film(const LineSetup& setup, int divisor);
