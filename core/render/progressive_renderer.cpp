@@ -176,6 +176,9 @@ ViewportRequests ProgressiveRenderer::take(bool wake_to_render) {
   });
   if (r.stop) return {.stop = true};
   superseded_.store(false);  // under the lock: a submit() after this sets it again
+  // The cancels of the requests taken here have done their work; a request after this
+  // cancels again, and stops the next pass even before it begins.
+  session_.clear_cancel();
   std::optional<SceneDesc> document = std::exchange(r.document, std::nullopt);
   taken_ = r;
   taken_.document = std::move(document);

@@ -165,7 +165,6 @@ void RenderSession::finish_probes(uint32_t pass) {
 int RenderSession::tile_count() const { return tile_grid().count(); }
 
 bool RenderSession::render_pass() {
-  cancelled_.store(false, std::memory_order_relaxed);
   const auto start = std::chrono::steady_clock::now();
   const int tiles = tile_count();
   const uint32_t pass = stats_.passes;
@@ -182,7 +181,10 @@ bool RenderSession::render_pass() {
     tiles_done_[size_t(tile)] = 1;
   });
   stats_.elapsed_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (cancelled_.load(std::memory_order_relaxed)) return false;
+  // The cancel is spent on this pass. One that came before the pass began stopped it
+  // too: it was meant for work not yet done (a time limit reached between passes, a
+  // viewport request the worker has not taken yet).
+  if (cancelled_.exchange(false, std::memory_order_relaxed)) return false;
   std::fill(tiles_done_.begin(), tiles_done_.end(), 0);
   finish_probes(pass);
   ++stats_.passes;

@@ -91,7 +91,10 @@ class RenderSession {
   // Renders one pass; false when cancelled, leaving a partial pass in the film
   // that the next call completes (its finished tiles are not rendered again).
   bool render_pass();
+  // Stops the pass in flight, or the next one if none is: a pass ends the cancel.
   void cancel() { cancelled_.store(true, std::memory_order_relaxed); }
+  // Withdraws a cancel no pass has ended yet: its reason was dealt with otherwise.
+  void clear_cancel() { cancelled_.store(false, std::memory_order_relaxed); }
 
   const Film& film() const { return *film_; }
   const RenderScene& scene() const { return *scene_; }

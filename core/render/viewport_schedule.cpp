@@ -1,5 +1,8 @@
 #include "core/render/viewport_schedule.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace inkray {
 namespace {
 
@@ -33,12 +36,20 @@ void ViewportSchedule::taken(const ViewportRequests& requests) {
   } else {
     change_ = requests.view_changed ? FilmChange::show : FilmChange::none;
   }
+  // What a request taken with a cancelled compile asked of the film still holds.
+  change_ = std::max(change_, std::exchange(carried_, FilmChange::none));
   step_ = requests.stop ? Step::stop : requests.document ? Step::compile : Step::film;
 }
 
 void ViewportSchedule::compiled(CompileOutcome outcome) {
-  if (outcome == CompileOutcome::cancelled || outcome == CompileOutcome::failed) {
-    step_ = Step::take;  // a newer document is waiting, or the last good scene stays
+  if (outcome == CompileOutcome::cancelled) {
+    // A newer document is waiting; a region or view taken with this one goes with it.
+    carried_ = std::max(carried_, change_);
+    step_ = Step::take;
+    return;
+  }
+  if (outcome == CompileOutcome::failed) {
+    step_ = Step::film;  // the last good scene stays, under the region and view taken with it
     return;
   }
   // Line colours, the painterly filter and render limits are read when the film

@@ -99,6 +99,7 @@ class ViewportSchedule {
   ViewportWork current_;  // handed out and waiting for its outcome
   ViewportRequests requests_;
   FilmChange change_ = FilmChange::none;
+  FilmChange carried_ = FilmChange::none;  // taken with a compile that was cancelled
   bool has_scene_ = false;
   bool active_ = false;  // passes remain: no limit reached since the last change
   // No snapshot since the last restart: the first preview's time adapts first_divisor_.

@@ -41,5 +41,23 @@ TEST(CancelledPass, ResumesWhereItStopped) {
     for (int x = 0; x < 64; ++x) ASSERT_EQ(interrupted.film().samples_at(x, y), 3u);
 }
 
+// A cancel between passes (a time limit reached, a request the viewport's worker has
+// not taken) stops the next pass before its first tile, and is spent there.
+TEST(CancelledPass, ACancelBeforeAPassStopsThatPassAndEndsThere) {
+  const CompileResult c = compile_scene(testing::white_room_scene(32, 24));
+  ASSERT_TRUE(c.scene);
+  RenderSession session(2);
+  session.set_scene(c.scene);
+  session.cancel();
+  EXPECT_FALSE(session.render_pass());
+  EXPECT_EQ(session.stats().passes, 0u);
+  EXPECT_EQ(session.film().samples_at(0, 0), 0u);
+  EXPECT_TRUE(session.render_pass());
+  session.cancel();
+  session.clear_cancel();  // withdrawn: the worker took the request it was for
+  EXPECT_TRUE(session.render_pass());
+  EXPECT_EQ(session.stats().passes, 2u);
+}
+
 }  // namespace
 }  // namespace inkray

@@ -116,6 +116,13 @@ struct Driver {
   }
   Trace change_view() { return run(with(&ViewportRequests::view_changed)); }
   Trace change_region() { return run(with(&ViewportRequests::region_changed)); }
+  // A region set over the film and a document, taken together.
+  ViewportRequests region_and_document() {
+    ui.region_empty = false;
+    ViewportRequests both = with(&ViewportRequests::region_changed);
+    both.document = true;
+    return both;
+  }
 };
 
 const Trace kPreviewsToTwoSamples = {
@@ -149,6 +156,32 @@ TEST(ViewportSchedule, AFailedOrCancelledCompileKeepsTheLastScene) {
     EXPECT_EQ(d.submit(), (Trace{"compile", "wait"}));
     EXPECT_EQ(d.schedule.accumulation(), accumulation);
   }
+}
+
+// A region taken with a document whose compile a newer one cancelled is not lost: it
+// holds with the newer document, even one that changes only the resolve.
+TEST(ViewportSchedule, ARegionTakenWithACancelledCompileHoldsForTheNextDocument) {
+  Driver d;
+  d.submit();
+  d.compile_outcome = CompileOutcome::cancelled;
+  const ViewportRequests both = d.region_and_document();
+  EXPECT_EQ(d.run(both), (Trace{"compile", "wait"}));
+  // Without the region the film would be kept ("keep film"); with it, it restarts, as a
+  // region and a document taken together do.
+  d.compile_outcome = CompileOutcome::resolve_only;
+  EXPECT_EQ(d.submit().at(1), "restart/1");
+}
+
+// A document that fails to compile leaves the last scene, under the region taken with it.
+TEST(ViewportSchedule, ARegionTakenWithAFailedCompileStillApplies) {
+  Driver d;
+  d.submit();
+  d.compile_outcome = CompileOutcome::failed;
+  const ViewportRequests both = d.region_and_document();
+  const uint64_t accumulation = d.schedule.accumulation();
+  EXPECT_EQ(d.run(both),
+            (Trace{"compile", "restart region", "pass/1", "publish", "pass/1", "publish finished", "wait"}));
+  EXPECT_EQ(d.schedule.accumulation(), accumulation + 1);
 }
 
 TEST(ViewportSchedule, AnEditOfTheResolveKeepsTheAccumulation) {
