@@ -153,6 +153,18 @@ class SharedList {
     if (removed) rechunk(std::move(pointers));
     return removed;
   }
+  // Applies `change` to the items `select` is true of, which alone are taken for writing:
+  // a rename that touches three objects of 20,000 copies three. Returns how many.
+  template <class Select, class Change>
+  size_t update_if(Select select, Change change) {
+    size_t changed = 0;
+    for (size_t i = 0; i < size_; ++i) {
+      if (!select(std::as_const(*this)[i])) continue;
+      change((*this)[i]);
+      ++changed;
+    }
+    return changed;
+  }
   void clear() {
     chunks_.clear();
     size_ = 0;

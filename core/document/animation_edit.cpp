@@ -30,13 +30,9 @@ std::string node_path(std::string_view material, std::string_view node_id) {
 
 size_t rename_tracks(SceneDesc& desc, std::string_view from, std::string_view to) {
   if (from == to) return 0;
-  size_t renamed = 0;
-  for (TrackDesc& track : desc.animation) {
-    if (!starts_with(track.target, from)) continue;
-    track.target = std::string(to) + track.target.substr(from.size());
-    ++renamed;
-  }
-  return renamed;
+  return desc.animation.update_if(
+      [&](const TrackDesc& t) { return starts_with(t.target, from); },
+      [&](TrackDesc& t) { t.target = std::string(to) + t.target.substr(from.size()); });
 }
 
 size_t delete_tracks(SceneDesc& desc, std::string_view prefix) {

@@ -82,6 +82,16 @@ TEST(SharedList, EraseIfRemovesWhatThePredicateSays) {
   EXPECT_EQ(list.erase_if([](const std::string&) { return false; }), 0u);
 }
 
+TEST(SharedList, UpdateIfTakesOnlyTheItemsItChanges) {
+  const SharedList<std::string> a = numbered(300);
+  SharedList<std::string> b = a;
+  EXPECT_EQ(b.update_if([](const std::string& s) { return s.size() == 1; }, [](std::string& s) { s += "!"; }),
+            10u);
+  EXPECT_EQ(shared_items(a, b), 290u);
+  EXPECT_EQ(std::as_const(b)[7], "7!");
+  EXPECT_EQ(a[7], "7");
+}
+
 TEST(SharedList, WorksWithTheStandardAlgorithms) {
   SharedList<int> list{5, 3, 9, 1, 7};
   std::sort(list.begin(), list.end());

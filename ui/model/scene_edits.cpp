@@ -233,25 +233,26 @@ bool rename_item(SceneDesc& scene, const Selection& item, const std::string& nam
   rename_tracks(scene, key_path(scene, item), entry_path(section_of(item.kind), name));
   switch (item.kind) {
     case ItemKind::object: {
-      std::string& old = scene.objects[size_t(item.index)].name;
-      for (StrokeEmitterDesc& e : scene.strokes) {
-        if (e.object == old) e.object = name;
-      }
-      old = name;
+      const std::string old = scene.objects[size_t(item.index)].name;
+      scene.strokes.update_if([&](const StrokeEmitterDesc& e) { return e.object == old; },
+                              [&](StrokeEmitterDesc& e) { e.object = name; });
+      scene.objects[size_t(item.index)].name = name;
       return true;
     }
     case ItemKind::material: {
-      std::string& old = scene.materials[size_t(item.index)].name;
-      for (ObjectDesc& o : scene.objects) {
-        if (o.material == old) o.material = name;
-      }
-      for (MaterialDesc& m : scene.materials) {
-        if (auto* mix = std::get_if<MixDesc>(&m.data)) {
-          if (mix->a == old) mix->a = name;
-          if (mix->b == old) mix->b = name;
-        }
-      }
-      old = name;
+      const std::string old = scene.materials[size_t(item.index)].name;
+      scene.objects.update_if([&](const ObjectDesc& o) { return o.material == old; },
+                              [&](ObjectDesc& o) { o.material = name; });
+      const auto names_old = [&](const MaterialDesc& m) {
+        const auto* mix = std::get_if<MixDesc>(&m.data);
+        return mix && (mix->a == old || mix->b == old);
+      };
+      scene.materials.update_if(names_old, [&](MaterialDesc& m) {
+        auto& mix = std::get<MixDesc>(m.data);
+        if (mix.a == old) mix.a = name;
+        if (mix.b == old) mix.b = name;
+      });
+      scene.materials[size_t(item.index)].name = name;
       return true;
     }
     case ItemKind::light:
