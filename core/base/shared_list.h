@@ -126,7 +126,12 @@ class SharedList {
     ++size_;
     return *chunk.items.back();
   }
-  void pop_back() { erase(end() - 1); }
+  // The last chunk only: the others stay shared.
+  void pop_back() {
+    own_chunk(chunks_.size() - 1).items.pop_back();
+    if (chunks_.back()->items.empty()) chunks_.pop_back();
+    --size_;
+  }
 
   iterator insert(const_iterator at, T item) {
     std::vector<std::shared_ptr<T>> pointers = all_pointers();
@@ -171,7 +176,7 @@ class SharedList {
   }
   void reserve(size_t n) { chunks_.reserve((n + kChunk - 1) / kChunk); }
   void resize(size_t n) {
-    while (size_ > n) pop_back();
+    if (n < size_) erase(begin() + difference_type(n), end());
     while (size_ < n) emplace_back();
   }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <numeric>
 #include <string>
+#include <utility>
 
 namespace inkray {
 namespace {
@@ -105,6 +106,23 @@ TEST(SharedList, WorksWithTheStandardAlgorithms) {
   list.pop_back();
   list.clear();
   EXPECT_TRUE(list.empty());
+}
+
+TEST(SharedList, PopAndShrinkLeaveTheOriginalAndTheRestShared) {
+  const SharedList<std::string> a = numbered(130);
+  SharedList<std::string> b = a;
+  b.pop_back();
+  b.pop_back();  // the last chunk held two items: it goes
+  ASSERT_EQ(b.size(), 128u);
+  EXPECT_EQ(std::as_const(b).back(), "127");
+  EXPECT_EQ(shared_items(a, b), 128u);
+  b.resize(70);
+  EXPECT_EQ(b.size(), 70u);
+  EXPECT_EQ(shared_items(a, b), 70u);
+  b.push_back("new");
+  EXPECT_EQ(std::as_const(b)[70], "new");
+  EXPECT_EQ(a.size(), 130u);
+  EXPECT_EQ(a[70], "70");
 }
 
 TEST(SharedList, AppendingToACopyLeavesTheOriginal) {
