@@ -24,6 +24,17 @@ void separate_missing_files(const SceneDesc& scene, std::vector<std::string>& wa
   for (const MissingAsset& m : missing_assets(references)) missing_files.push_back(describe(m));
 }
 
+// Undo, redo and discarding a step restore documents as they were, but not the frame they
+// were on. `restore` takes one step of the history back or forth, false when there is none.
+template <class Restore>
+bool restore_keeping_frame(SceneDesc& scene, uint64_t& revision, Restore restore) {
+  const float frame = scene.render.frame;
+  if (!restore()) return false;
+  scene.render.frame = frame;
+  ++revision;
+  return true;
+}
+
 }  // namespace
 
 Document::Document() { reset(default_scene()); }
@@ -80,29 +91,16 @@ void Document::set_frame(double frame) {
   ++revision_;
 }
 
-// Undo and redo restore documents as they were, but not the frame they were on.
 bool Document::undo(Selection* selection) {
-  const float frame = scene_.render.frame;
-  if (!history_.undo(scene_, selection)) return false;
-  scene_.render.frame = frame;
-  ++revision_;
-  return true;
+  return restore_keeping_frame(scene_, revision_, [&] { return history_.undo(scene_, selection); });
 }
 
 bool Document::discard_newest() {
-  const float frame = scene_.render.frame;
-  if (!history_.discard_newest(scene_)) return false;
-  scene_.render.frame = frame;
-  ++revision_;
-  return true;
+  return restore_keeping_frame(scene_, revision_, [&] { return history_.discard_newest(scene_); });
 }
 
 bool Document::redo(Selection* selection) {
-  const float frame = scene_.render.frame;
-  if (!history_.redo(scene_, selection)) return false;
-  scene_.render.frame = frame;
-  ++revision_;
-  return true;
+  return restore_keeping_frame(scene_, revision_, [&] { return history_.redo(scene_, selection); });
 }
 
 bool Document::open(const std::filesystem::path& file, std::vector<std::string>* errors,
