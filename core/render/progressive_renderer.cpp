@@ -37,69 +37,61 @@ ProgressiveRenderer::ProgressiveRenderer(int threads) : session_(threads) {
   worker_ = std::thread([this] { run(); });
 }
 
-ProgressiveRenderer::~ProgressiveRenderer() {
+template <class Change>
+void ProgressiveRenderer::request(Pass pass, Change change) {
   {
     std::lock_guard lock(mutex_);
-    requests_.stop = true;
+    change(requests_);
   }
-  superseded_.store(true);
-  session_.cancel();
+  if (pass == Pass::cancelled) session_.cancel();
   wake_.notify_all();
+}
+
+ProgressiveRenderer::~ProgressiveRenderer() {
+  request(Pass::cancelled, [&](Requests& r) {
+    r.stop = true;
+    superseded_.store(true);
+  });
   worker_.join();
 }
 
 uint64_t ProgressiveRenderer::submit(const SceneDesc& scene) {
   uint64_t revision;
-  {
-    std::lock_guard lock(mutex_);
-    requests_.document = scene;
-    revision = requests_.revision = ++revisions_;
-    requests_.time = std::chrono::steady_clock::now();
+  request(Pass::cancelled, [&](Requests& r) {
+    r.document = scene;
+    revision = r.revision = ++revisions_;
+    r.time = std::chrono::steady_clock::now();
     // Under the lock, so it cannot land after the worker took this very document.
     superseded_.store(true);
-  }
-  session_.cancel();
-  wake_.notify_all();
+  });
   return revision;
 }
 
+// The pass in flight stops and resumes after the new encoding is published (its finished
+// tiles are kept), so an exposure drag shows at once, not a pass later.
 void ProgressiveRenderer::set_view(const ViewportView& view) {
-  {
-    std::lock_guard lock(mutex_);
-    requests_.view = view;
-    requests_.view_changed = true;
-  }
-  // The pass in flight stops and resumes after the new encoding is published (its
-  // finished tiles are kept), so an exposure drag shows at once, not a pass later.
-  session_.cancel();
-  wake_.notify_all();
+  request(Pass::cancelled, [&](Requests& r) {
+    r.view = view;
+    r.view_changed = true;
+  });
 }
 
 void ProgressiveRenderer::set_limits(const ViewportLimits& limits) {
-  {
-    std::lock_guard lock(mutex_);
-    requests_.limits = limits;
-    requests_.view_changed = true;  // a raised limit lets a finished render continue
-  }
-  wake_.notify_all();
+  request(Pass::continues, [&](Requests& r) {
+    r.limits = limits;
+    r.view_changed = true;  // a raised limit lets a finished render continue
+  });
 }
 
 void ProgressiveRenderer::set_region(const RegionRect& region) {
-  {
-    std::lock_guard lock(mutex_);
-    requests_.region = region;
-    requests_.region_changed = true;
-  }
-  session_.cancel();
-  wake_.notify_all();
+  request(Pass::cancelled, [&](Requests& r) {
+    r.region = region;
+    r.region_changed = true;
+  });
 }
 
 void ProgressiveRenderer::set_paused(bool paused) {
-  {
-    std::lock_guard lock(mutex_);
-    requests_.paused = paused;
-  }
-  wake_.notify_all();
+  request(Pass::continues, [&](Requests& r) { r.paused = paused; });
 }
 
 bool ProgressiveRenderer::paused() const {

@@ -119,6 +119,12 @@ class ProgressiveRenderer {
     bool paused = false, stop = false, region_changed = false, view_changed = false;
   };
 
+  // What a request does to the pass in flight: lets it finish, or stops it early.
+  enum class Pass { continues, cancelled };
+  // Changes requests_ under mutex_ with `change`, then wakes the worker.
+  template <class Change>
+  void request(Pass pass, Change change);
+
   // The worker: asks the schedule for the next piece of work and does it.
   void run();
   void execute(const ViewportWork& work);
