@@ -271,6 +271,10 @@ void Lowering::lower_node(size_t node) {
         const auto out = [&](size_t socket, VReg reg, SocketType type) {
           outputs_[{node, socket}] = Value{reg, type};
         };
+        // A math or mix result, kept to [0, 1] when the node's clamp is on.
+        const auto clamped_if = [&](bool clamp, VReg reg) {
+          return clamp ? emit(ShaderOp::clamp01, {reg}) : reg;
+        };
         if constexpr (std::is_same_v<T, OutputNode>) {
           // The root is the last closure made (allocate() puts it first).
           if (auto root = closure_input(node, "surface")) {
@@ -334,16 +338,14 @@ void Lowering::lower_node(size_t node) {
               emit(ShaderOp::ramp, {in(0)}, uint8_t(d.interpolation), uint32_t(program_->ramps.size() - 1)),
               SocketType::color);
         } else if constexpr (std::is_same_v<T, MathNode>) {
-          VReg r = emit(ShaderOp::math, {in(0), in(1), in(2)}, uint8_t(d.operation));
-          if (d.clamp_result) r = emit(ShaderOp::clamp01, {r});
-          out(0, r, SocketType::float_value);
+          const VReg r = emit(ShaderOp::math, {in(0), in(1), in(2)}, uint8_t(d.operation));
+          out(0, clamped_if(d.clamp_result, r), SocketType::float_value);
         } else if constexpr (std::is_same_v<T, MapRangeNode>) {
           out(0, emit(ShaderOp::map_range, {in(0), in(1), in(2), in(3), in(4)}, uint8_t(d.clamp_result)),
               SocketType::float_value);
         } else if constexpr (std::is_same_v<T, MixColorNode>) {
-          VReg r = emit(ShaderOp::mix_color, {in(0), in(1), in(2)}, uint8_t(d.blend));
-          if (d.clamp_result) r = emit(ShaderOp::clamp01, {r});
-          out(0, r, SocketType::color);
+          const VReg r = emit(ShaderOp::mix_color, {in(0), in(1), in(2)}, uint8_t(d.blend));
+          out(0, clamped_if(d.clamp_result, r), SocketType::color);
         } else if constexpr (std::is_same_v<T, VectorMathNode>) {
           const VReg a = in(0), b = in(1), s = in(2);
           out(0, emit(ShaderOp::vector_math, {a, b, s}, uint8_t(d.operation)), SocketType::vector);
