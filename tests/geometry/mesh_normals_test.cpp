@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace inkray {
@@ -17,11 +18,18 @@ namespace {
 
 const std::filesystem::path kMeshes = INKRAY_SOURCE_DIR "/tests/data/meshes";
 
-TriangleMeshData load(const std::string& name) {
-  std::string error;
-  auto mesh = load_obj(kMeshes / name, &error);
+// The mesh read, or (with the test failed) an empty one.
+TriangleMeshData expect_mesh(const std::optional<TriangleMeshData>& mesh, const std::string& error) {
   EXPECT_TRUE(mesh) << error;
   return mesh ? *mesh : TriangleMeshData{};
+}
+TriangleMeshData load(const std::string& name) {
+  std::string error;
+  return expect_mesh(load_obj(kMeshes / name, &error), error);
+}
+TriangleMeshData parse(const std::string& text, const std::string& name) {
+  std::string error;
+  return expect_mesh(parse_obj(text, name, &error), error);
 }
 
 float angle_degrees(const Vec3& a, const Vec3& b) {
@@ -144,15 +152,13 @@ TEST(AutoSmooth, NormalsInTheFileAreUsedAsGiven) {
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
       "vn 0.6 0 0.8\nvn 0 0.6 0.8\nvn 0 0 1\n"
       "f 1//1 2//2 3//3\nf 2//2 4//1 3//3\n";
-  std::string error;
-  const auto mesh = parse_obj(text, "given.obj", &error);
-  ASSERT_TRUE(mesh) << error;
-  EXPECT_FALSE(needs_auto_smooth(*mesh, 30.f));
+  const TriangleMeshData mesh = parse(text, "given.obj");
+  EXPECT_FALSE(needs_auto_smooth(mesh, 30.f));
   for (const float angle : {0.f, 30.f, 180.f}) {
-    const TriangleMeshData out = auto_smooth(*mesh, angle);
-    EXPECT_EQ(out.positions, mesh->positions);
-    EXPECT_EQ(out.normals, mesh->normals);
-    EXPECT_EQ(out.indices, mesh->indices);
+    const TriangleMeshData out = auto_smooth(mesh, angle);
+    EXPECT_EQ(out.positions, mesh.positions);
+    EXPECT_EQ(out.normals, mesh.normals);
+    EXPECT_EQ(out.indices, mesh.indices);
   }
   const TriangleMeshData cube = load("cube.obj");  // a normal per face corner
   EXPECT_EQ(auto_smooth(cube, 180.f).normals, cube.normals);
@@ -164,12 +170,10 @@ TEST(AutoSmooth, UvSeamsSplitVerticesButNotNormals) {
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.2\n"
       "vt 0 0\nvt 1 0\nvt 0 1\nvt 0.5 0.5\nvt 0.7 0.7\nvt 1 1\n"
       "f 1/1 2/2 3/3\nf 2/4 4/6 3/5\n";
-  std::string error;
-  const auto mesh = parse_obj(text, "seam.obj", &error);
-  ASSERT_TRUE(mesh) << error;
-  const TriangleMeshData smooth = auto_smooth(*mesh, 30.f);
+  const TriangleMeshData mesh = parse(text, "seam.obj");
+  const TriangleMeshData smooth = auto_smooth(mesh, 30.f);
   ASSERT_EQ(smooth.uvs.size(), smooth.positions.size());
-  EXPECT_EQ(smooth.positions.size(), mesh->positions.size()) << "the uv split is kept, nothing more";
+  EXPECT_EQ(smooth.positions.size(), mesh.positions.size()) << "the uv split is kept, nothing more";
   // The two vertices at (1, 0, 0), one per side of the seam, share one normal.
   for (size_t i = 0; i < smooth.positions.size(); ++i)
     for (size_t j = i + 1; j < smooth.positions.size(); ++j)
@@ -177,7 +181,7 @@ TEST(AutoSmooth, UvSeamsSplitVerticesButNotNormals) {
         EXPECT_EQ(smooth.normals[i], smooth.normals[j]);
       }
   for (size_t c = 0; c < smooth.indices.size(); ++c)
-    EXPECT_EQ(smooth.uvs[smooth.indices[c]], mesh->uvs[mesh->indices[c]]);
+    EXPECT_EQ(smooth.uvs[smooth.indices[c]], mesh.uvs[mesh.indices[c]]);
 }
 
 TEST(AutoSmooth, BrokenGeometryGivesFiniteNormals) {
