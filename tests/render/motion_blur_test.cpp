@@ -98,25 +98,25 @@ void expect_streak(const RgbImage& image) {
   EXPECT_NEAR(expected_pixel(kWidth / 2, 1), 0.5, 0.01);
 }
 
-TEST(MotionBlur, MovingSphereLeavesTheAnalyticStreak) {
-  const SceneDesc desc = streak_scene(false);
+// The same streak whichever moves: the sphere across the frame, or the camera past it.
+class MotionBlurStreak : public ::testing::TestWithParam<bool> {};  // the parameter: the camera moves
+
+TEST_P(MotionBlurStreak, MatchesTheAnalyticStreak) {
+  const bool camera_moves = GetParam();
+  const SceneDesc desc = streak_scene(camera_moves);
   const CompileResult c = compile_scene(desc);
   ASSERT_TRUE(c.scene) << c.errors.front();
-  EXPECT_TRUE(c.scene->world->geometry.moving(0));
-  EXPECT_FALSE(c.scene->camera.moves());
+  EXPECT_EQ(c.scene->world->geometry.moving(0), !camera_moves);
+  EXPECT_EQ(c.scene->camera.moves(), camera_moves);
   // A ray without a time of its own (picking) sees the frame: halfway through this shutter.
   EXPECT_EQ(c.scene->camera.generate_ray(Vec2(32.f, 2.f), Vec2(0.5f)).time, 0.5f);
   expect_streak(testing::render_scene(desc, kStreakSamples));
 }
 
-TEST(MotionBlur, MovingCameraBlursAStillScene) {
-  const SceneDesc desc = streak_scene(true);
-  const CompileResult c = compile_scene(desc);
-  ASSERT_TRUE(c.scene) << c.errors.front();
-  EXPECT_FALSE(c.scene->world->geometry.moving(0));
-  EXPECT_TRUE(c.scene->camera.moves());
-  expect_streak(testing::render_scene(desc, kStreakSamples));
-}
+INSTANTIATE_TEST_SUITE_P(MotionBlur, MotionBlurStreak, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& p) {
+                           return p.param ? "MovingCamera" : "MovingSphere";
+                         });
 
 // Without the shutter open the same documents show the sphere sharp, where the
 // frame has it: white across its middle.
