@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace inkray {
 namespace {
@@ -17,21 +18,12 @@ float finite_or(float v, float fallback) { return std::isfinite(v) ? v : fallbac
 }  // namespace
 
 const PanelRect& PanelRects::operator[](Panel p) const {
-  switch (p) {
-    case Panel::scene:
-      return scene;
-    case Panel::viewport:
-      return viewport;
-    case Panel::output:
-      return output;
-    case Panel::properties:
-      return properties;
-    case Panel::node_editor:
-      return node_editor;
-    case Panel::timeline:
-      return timeline;
-  }
-  return scene;
+  // In Panel's order.
+  static constexpr PanelRect PanelRects::*kRects[] = {&PanelRects::scene,       &PanelRects::viewport,
+                                                      &PanelRects::output,      &PanelRects::properties,
+                                                      &PanelRects::node_editor, &PanelRects::timeline};
+  static_assert(std::size(kRects) == size_t(Panel::timeline) + 1);
+  return this->*kRects[size_t(p)];
 }
 
 PanelLayout sanitized(PanelLayout l) {
