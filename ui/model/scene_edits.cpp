@@ -54,9 +54,24 @@ Selection add_object(SceneDesc& scene, std::string_view base, ShapeVariant shape
   return {ItemKind::object, int(scene.objects.size()) - 1};
 }
 
-// The section of the document a named item is listed in, as animation paths name it.
+// Objects, lights, materials and emitters: entries of a list, each under a name of its own.
+bool is_named(ItemKind kind) {
+  return kind == ItemKind::object || kind == ItemKind::light || kind == ItemKind::material ||
+         kind == ItemKind::emitter;
+}
+
+// The section of the document an item is in, as animation paths name it: the list a named
+// item is listed in, or the singleton itself.
 std::string_view section_of(ItemKind kind) {
   switch (kind) {
+    case ItemKind::camera:
+      return "camera";
+    case ItemKind::render:
+      return "render";
+    case ItemKind::environment:
+      return "environment";
+    case ItemKind::outlines:
+      return "outlines";
     case ItemKind::object:
       return "objects";
     case ItemKind::light:
@@ -65,9 +80,10 @@ std::string_view section_of(ItemKind kind) {
       return "materials";
     case ItemKind::emitter:
       return "strokes";
-    default:
-      return {};
+    case ItemKind::none:
+      break;
   }
+  return {};
 }
 
 template <class T>
@@ -229,7 +245,7 @@ bool delete_item(SceneDesc& scene, const Selection& item) {
 
 bool rename_item(SceneDesc& scene, const Selection& item, const std::string& name) {
   if (!is_valid(scene, item) || name.empty() || name_taken(scene, item.kind, name)) return false;
-  if (section_of(item.kind).empty()) return false;
+  if (!is_named(item.kind)) return false;
   rename_tracks(scene, key_path(scene, item), entry_path(section_of(item.kind), name));
   switch (item.kind) {
     case ItemKind::object: {
@@ -267,30 +283,10 @@ bool rename_item(SceneDesc& scene, const Selection& item, const std::string& nam
 }
 
 std::string key_path(const SceneDesc& scene, const Selection& item, std::string_view param) {
-  if (!is_valid(scene, item)) return {};
-  std::string path;
-  switch (item.kind) {
-    case ItemKind::camera:
-      path = "camera/";
-      break;
-    case ItemKind::render:
-      path = "render/";
-      break;
-    case ItemKind::environment:
-      path = "environment/";
-      break;
-    case ItemKind::outlines:
-      path = "outlines/";
-      break;
-    case ItemKind::object:
-    case ItemKind::light:
-    case ItemKind::material:
-    case ItemKind::emitter:
-      path = entry_path(section_of(item.kind), item_name(scene, item));
-      break;
-    case ItemKind::none:
-      return {};
-  }
+  const std::string_view section = section_of(item.kind);
+  if (!is_valid(scene, item) || section.empty()) return {};
+  std::string path =
+      is_named(item.kind) ? entry_path(section, item_name(scene, item)) : std::string(section) + "/";
   for (char c : param) path += c == '.' ? '/' : c;
   return path;
 }
