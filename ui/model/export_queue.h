@@ -6,6 +6,7 @@
 
 #include "core/render/export_job.h"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -42,6 +43,8 @@ std::filesystem::path default_export_path(const std::filesystem::path& scene_fil
 ExportRequest make_export_request(const ExportForm& form, const ExportFormCheck& check, SceneDesc scene);
 
 enum class ExportState { queued, running, done, failed, cancelled };
+inline constexpr std::array<const char*, 5> kExportStateNames = {"queued", "running", "done", "failed",
+                                                                 "cancelled"};
 
 struct ExportEntry {
   uint64_t id = 0;

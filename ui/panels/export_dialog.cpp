@@ -38,22 +38,6 @@ void row(const char* label) {
   ImGui::TableNextColumn();
 }
 
-const char* state_text(ExportState s) {
-  switch (s) {
-    case ExportState::queued:
-      return "queued";
-    case ExportState::running:
-      return "running";
-    case ExportState::done:
-      return "done";
-    case ExportState::failed:
-      return "failed";
-    case ExportState::cancelled:
-      return "cancelled";
-  }
-  return "";
-}
-
 }  // namespace
 
 void ExportUi::open_dialog(const EditorState& state) {
@@ -328,7 +312,7 @@ void ExportUi::draw_progress() {
       } else if (e.state == ExportState::done) {
         ImGui::Text("done, %u spp in %s", e.progress.spp, clock_text(e.progress.elapsed_seconds).c_str());
       } else {
-        ImGui::TextUnformatted(state_text(e.state));
+        ImGui::TextUnformatted(kExportStateNames[size_t(e.state)]);
       }
       ImGui::TableNextColumn();
       if (e.state == ExportState::queued && ImGui::SmallButton("Cancel")) queue_.cancel(e.id);
