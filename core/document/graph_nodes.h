@@ -83,10 +83,7 @@ struct ImageTextureNode {
 template <>
 struct ParamTable<ImageTextureNode> {
   static constexpr auto rows =
-      std::tuple{row(&ImageTextureNode::path, required(path("path", "Image file, relative to the scene file"))
-                                                  .files(FileType::image)
-                                                  .labelled("Image file")),
-                 row(&ImageTextureNode::srgb, toggle("srgb", "Decode 8-bit texels from sRGB to linear"))};
+      std::tuple{row(&ImageTextureNode::path, kImageFile), row(&ImageTextureNode::srgb, kImageSrgb)};
 };
 
 struct CheckerNode {

@@ -19,6 +19,12 @@
 namespace inkray {
 
 // ---------------------------------------------------------------- colour inputs
+// An image texture's file and decoding, alike for a colour input and a graph's image node.
+inline constexpr Param kImageFile = required(path("path", "Image file, relative to the scene file"))
+                                        .files(FileType::image)
+                                        .labelled("Image file");
+inline constexpr Param kImageSrgb = toggle("srgb", "Decode 8-bit texels from sRGB to linear");
+
 struct ImageTextureDesc {
   static constexpr std::string_view type_name = "image";
   std::string path;  // relative to the scene file; PNG/JPEG/HDR through stb
@@ -29,11 +35,9 @@ struct ImageTextureDesc {
 template <>
 struct ParamTable<ImageTextureDesc> {
   static constexpr auto rows = std::tuple{
-      row(&ImageTextureDesc::path, required(path("path", "Image file, relative to the scene file"))
-                                       .files(FileType::image)
-                                       .labelled("Image file")),
+      row(&ImageTextureDesc::path, kImageFile),
       row(&ImageTextureDesc::scale, color("scale", 1e6, "Multiplies every texel").labelled("Tint")),
-      row(&ImageTextureDesc::srgb, toggle("srgb", "Decode 8-bit texels from sRGB to linear"))};
+      row(&ImageTextureDesc::srgb, kImageSrgb)};
 };
 
 struct CheckerTextureDesc {
