@@ -211,6 +211,31 @@ RTCRay to_rtc(const Ray& ray, float t_max) {
   return r;
 }
 
+// The closest hit over the top levels on the instances `mask` lets through, named by
+// the scene's shapes (a hit on a quad as its triangle's); *ng is the hit's geometric
+// normal in its instance's space. False for a miss, or a ray Embree cannot take.
+template <class Impl>
+bool closest_hit(const Impl& impl, const Ray& ray, float t_max, unsigned mask, Hit* hit, Vec3* ng) {
+  QueryContext context(impl.piece_owner, impl.alpha_textures);
+  rtcInitIntersectContext(&context.rtc);
+  if (!traceable(ray, t_max)) return false;
+  RTCRayHit rh{};
+  rh.ray = to_rtc(ray, t_max);
+  rh.ray.mask = mask;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  intersect_top_levels(impl, context, rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  hit->t = rh.ray.tfar;
+  hit->geometry = context.instance_of(rh.hit.instID[0]);
+  hit->prim = rh.hit.primID;
+  hit->barycentric = {rh.hit.u, rh.hit.v};
+  if (impl.instances[hit->geometry].bvh->traced_as_quads())
+    quad_to_triangle(rh.hit.primID, rh.hit.u, rh.hit.v, &hit->prim, &hit->barycentric.x, &hit->barycentric.y);
+  *ng = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  return true;
+}
+
 // interpolate_shading of a mesh moved by `move`, as `transformed` (triangle_mesh.h)
 // would move it: normals by the inverse transpose, each normalised, then interpolated.
 MeshShading moved_shading(const TriangleMesh& mesh, uint32_t tri, float b1, float b2, const Normal3& ng,
@@ -632,28 +657,14 @@ Transform EmbreeScene::placement(uint32_t index, float time) const {
 }
 
 bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind) const {
-  QueryContext context(impl_->piece_owner, impl_->alpha_textures);
-  rtcInitIntersectContext(&context.rtc);
-  if (!traceable(ray, t_max)) return false;
-  RTCRayHit rh{};
-  rh.ray = to_rtc(ray, t_max);
   // Camera rays find the surface first and then the paint on it, which lies
   // within the layer in front of the hit: the paint BVH, a shell around the
   // object, is walked over that stretch only, not by every ray passing near it.
   const bool surface_first = kind == RayKind::camera && impl_->direct_paint && !impl_->camera_paint.empty();
-  rh.ray.mask = surface_first ? kSolid : kSolid | (kind == RayKind::camera ? kPaint : kPaintIndirect);
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  intersect_top_levels(*impl_, context, rh);
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-  hit->t = rh.ray.tfar;
-  hit->geometry = context.instance_of(rh.hit.instID[0]);
-  hit->prim = rh.hit.primID;
-  hit->barycentric = {rh.hit.u, rh.hit.v};
+  const unsigned seen = surface_first ? kSolid : kSolid | (kind == RayKind::camera ? kPaint : kPaintIndirect);
+  Vec3 ng;
+  if (!closest_hit(*impl_, ray, t_max, seen, hit, &ng)) return false;
   const ShapeBvh& bvh = *impl_->instances[hit->geometry].bvh;
-  if (bvh.traced_as_quads())
-    quad_to_triangle(rh.hit.primID, rh.hit.u, rh.hit.v, &hit->prim, &hit->barycentric.x, &hit->barycentric.y);
-  const Vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
   if (surface_first) {
     paint_on_surface(ray, ng, hit);
     return true;
@@ -670,6 +681,11 @@ bool EmbreeScene::intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind)
     }
   }
   return true;
+}
+
+bool EmbreeScene::intersect_solid(const Ray& ray, float t_max, Hit* hit) const {
+  Vec3 ng;
+  return closest_hit(*impl_, ray, t_max, kSolid, hit, &ng);
 }
 
 void EmbreeScene::paint_on_surface(const Ray& ray, const Vec3& ng, Hit* hit) const {

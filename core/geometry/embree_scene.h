@@ -146,6 +146,9 @@ class EmbreeScene {
 
   // The closest hit; where it is on paint, the paint painted last there.
   bool intersect(const Ray& ray, float t_max, Hit* hit, RayKind kind = RayKind::camera) const;
+  // The closest hit on what casts shadows, paint left out (it lies on a surface, which
+  // hides what it hides): what stands between the camera and a hidden line.
+  bool intersect_solid(const Ray& ray, float t_max, Hit* hit) const;
   bool occluded(const Ray& ray, float t_max) const;
   SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
 

@@ -12,8 +12,22 @@
 namespace inkray {
 namespace {
 
-// Vertex -> welded position id; vertices whose positions are exactly equal share one.
-std::vector<uint32_t> weld(std::span<const Point3> positions) {
+float angle_degrees(const Normal3& a, const Normal3& b) {
+  if (a == Normal3(0.f) || b == Normal3(0.f)) return std::numeric_limits<float>::infinity();
+  return glm::degrees(std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)));
+}
+
+uint32_t find_root(std::vector<uint32_t>& parent, uint32_t x) {
+  while (parent[x] != x) {
+    parent[x] = parent[parent[x]];  // path halving
+    x = parent[x];
+  }
+  return x;
+}
+
+}  // namespace
+
+std::vector<uint32_t> weld_positions(std::span<const Point3> positions) {
   struct Key {
     uint32_t x, y, z, vertex;
   };
@@ -37,21 +51,6 @@ std::vector<uint32_t> weld(std::span<const Point3> positions) {
   return welded;
 }
 
-float angle_degrees(const Normal3& a, const Normal3& b) {
-  if (a == Normal3(0.f) || b == Normal3(0.f)) return std::numeric_limits<float>::infinity();
-  return glm::degrees(std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)));
-}
-
-uint32_t find_root(std::vector<uint32_t>& parent, uint32_t x) {
-  while (parent[x] != x) {
-    parent[x] = parent[parent[x]];  // path halving
-    x = parent[x];
-  }
-  return x;
-}
-
-}  // namespace
-
 Normal3 facet_normal(const Point3& a, const Point3& b, const Point3& c) {
   const Vec3 e1 = b - a, e2 = c - a;
   const Vec3 n = glm::cross(e1, e2);
@@ -67,7 +66,7 @@ MeshFeatures find_feature_edges(std::span<const Point3> positions, std::span<con
   const size_t triangles = indices.size() / 3;
   out.triangles = uint32_t(triangles);
   if (triangles == 0) return out;
-  const std::vector<uint32_t> welded = weld(positions);
+  const std::vector<uint32_t> welded = weld_positions(positions);
   const size_t welded_count = size_t(*std::max_element(welded.begin(), welded.end())) + 1;
 
   // Half-edges bucketed by their lower welded vertex, each with its upper one.

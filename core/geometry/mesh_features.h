@@ -30,6 +30,10 @@ struct MeshFeatures {
 // or too thin for its normal to mean anything in float).
 Normal3 facet_normal(const Point3& a, const Point3& b, const Point3& c);
 
+// Vertex -> welded position id, counting from 0: vertices whose positions are exactly
+// equal share one.
+std::vector<uint32_t> weld_positions(std::span<const Point3> positions);
+
 // Edges are found by position, welded where exactly equal, so vertices split for
 // normals or uvs still join. Boundary edges are not listed. An edge of three or more
 // triangles (non-manifold) lists every pair, or for more than kMaxPairedFan

@@ -35,6 +35,7 @@ struct Chain {
   int object = -1;      // document object index of the surface under most of the chain; -1: none
   int material = -1;    // document material index, likewise
   bool closed = false;  // the last point joins the first
+  int covers = 0;       // surfaces between the camera and the line: 0 seen, 1 and more hidden
   std::vector<ChainPoint> points;
 };
 
