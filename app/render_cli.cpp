@@ -2,6 +2,7 @@
 
 #include "app/cli_numbers.h"
 #include "app/cli_options.h"
+#include "core/document/desc.h"
 #include "core/film/film.h"
 #include "core/image/image_io.h"
 #include "core/io/output_set.h"

@@ -6,34 +6,35 @@
 
 namespace inkray {
 
-Camera::Camera(const CameraDesc& desc, int width, int height) : width_(float(width)), height_(float(height)) {
-  view_ = make_view(desc);
+Camera::Camera(const CameraParams& params, int width, int height)
+    : width_(float(width)), height_(float(height)) {
+  view_ = make_view(params);
 }
 
-Camera::Camera(const CameraDesc& desc, const CameraDesc& open, const CameraDesc& close, int width, int height,
-               float frame_time)
-    : Camera(desc, width, height) {
+Camera::Camera(const CameraParams& params, const CameraParams& open, const CameraParams& close, int width,
+               int height, float frame_time)
+    : Camera(params, width, height) {
   frame_time_ = glm::clamp(frame_time, 0.f, 1.f);
   if (open == close) return;
   // A focus distance of 0 means "on look_at": resolved at each end, so the focus
   // follows the target between them.
-  std::array<CameraDesc, 2> ends = {open, close};
-  for (CameraDesc& end : ends)
+  std::array<CameraParams, 2> ends = {open, close};
+  for (CameraParams& end : ends)
     if (!(end.focus_distance > 0.f)) end.focus_distance = glm::length(end.look_at - end.look_from);
   motion_ = ends;
 }
 
-Camera::View Camera::make_view(const CameraDesc& desc) const {
+Camera::View Camera::make_view(const CameraParams& params) const {
   View view;
-  view.origin = desc.look_from;
-  view.w = glm::normalize(desc.look_at - desc.look_from);
-  view.u = glm::normalize(glm::cross(view.w, desc.up));
+  view.origin = params.look_from;
+  view.w = glm::normalize(params.look_at - params.look_from);
+  view.u = glm::normalize(glm::cross(view.w, params.up));
   view.v = glm::cross(view.u, view.w);
-  view.half_height = std::tan(glm::radians(desc.vfov) * 0.5f);
+  view.half_height = std::tan(glm::radians(params.vfov) * 0.5f);
   view.half_width = view.half_height * width_ / height_;
-  view.lens_radius = desc.aperture * 0.5f;
+  view.lens_radius = params.aperture * 0.5f;
   view.focus_distance =
-      desc.focus_distance > 0.f ? desc.focus_distance : glm::length(desc.look_at - desc.look_from);
+      params.focus_distance > 0.f ? params.focus_distance : glm::length(params.look_at - params.look_from);
   return view;
 }
 
@@ -56,9 +57,9 @@ Ray Camera::generate_ray(Vec2 film, Vec2 lens, float time) const {
 }
 
 Camera::View Camera::view_at(float time) const {
-  const CameraDesc& a = (*motion_)[0];
-  const CameraDesc& b = (*motion_)[1];
-  CameraDesc now;
+  const CameraParams& a = (*motion_)[0];
+  const CameraParams& b = (*motion_)[1];
+  CameraParams now;
   now.look_from = glm::mix(a.look_from, b.look_from, time);
   now.look_at = glm::mix(a.look_at, b.look_at, time);
   now.up = glm::mix(a.up, b.up, time);

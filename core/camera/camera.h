@@ -3,8 +3,8 @@
 // integration and film live elsewhere.
 #pragma once
 
+#include "core/camera/camera_params.h"
 #include "core/geometry/ray.h"
-#include "core/document/desc.h"
 
 #include <array>
 #include <optional>
@@ -14,14 +14,14 @@ namespace inkray {
 class Camera {
  public:
   Camera() = default;
-  Camera(const CameraDesc& desc, int width, int height);
+  Camera(const CameraParams& params, int width, int height);
   // A camera that moves while the shutter is open: as `open` at time 0 and as
   // `close` at time 1, its parameters (look_from, look_at, up, vfov, aperture and
   // focus distance) interpolated linearly between (docs/architecture.md, "Motion
-  // blur"). `desc`, the camera at the frame, answers everything but generate_ray;
+  // blur"). `params`, the camera at the frame, answers everything but generate_ray;
   // `frame_time` is the frame's own instant in the shutter.
-  Camera(const CameraDesc& desc, const CameraDesc& open, const CameraDesc& close, int width, int height,
-         float frame_time = 0.f);
+  Camera(const CameraParams& params, const CameraParams& open, const CameraParams& close, int width,
+         int height, float frame_time = 0.f);
 
   // film: continuous pixel coordinates, (0,0) top-left, (width,height) bottom-right.
   // lens: a 2D sample in [0,1)^2, ignored by a pinhole.
@@ -53,7 +53,7 @@ class Camera {
     float lens_radius = 0.f;
     float focus_distance = 1.f;
   };
-  View make_view(const CameraDesc& desc) const;
+  View make_view(const CameraParams& params) const;
   View view_at(float time) const;  // of a moving camera
   Ray ray_from(const View& view, Vec2 film, Vec2 lens, float time) const;
   // generate_ray of a moving camera: its view at `time`.
@@ -63,7 +63,7 @@ class Camera {
   float width_ = 1.f, height_ = 1.f;
   float frame_time_ = 0.f;
   // The camera at the shutter's opening and closing, focus distances resolved.
-  std::optional<std::array<CameraDesc, 2>> motion_;
+  std::optional<std::array<CameraParams, 2>> motion_;
 };
 
 }  // namespace inkray

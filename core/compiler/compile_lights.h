@@ -2,6 +2,7 @@
 // document's lights, the environment, and the distribution that picks one.
 #pragma once
 
+#include "core/document/desc.h"
 #include "core/world/render_scene.h"
 
 namespace inkray {

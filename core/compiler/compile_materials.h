@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/compiler/asset_cache.h"
+#include "core/document/desc.h"
 #include "core/world/render_scene.h"
 
 #include <string>

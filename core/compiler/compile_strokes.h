@@ -5,6 +5,7 @@
 #include "core/base/cancel.h"
 #include "core/compiler/asset_cache.h"
 #include "core/compiler/compile_counters.h"
+#include "core/document/desc.h"
 #include "core/world/render_scene.h"
 
 #include <span>

@@ -1,5 +1,7 @@
 #include "core/compiler/compile_view.h"
 
+#include "core/npr/outlines/outline_styles.h"
+
 namespace inkray {
 
 SampleSettings compile_sample_settings(const RenderSettings& render) {

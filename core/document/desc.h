@@ -6,8 +6,10 @@
 #pragma once
 
 #include "core/base/shared_list.h"
+#include "core/camera/camera_params.h"
 #include "core/math/types.h"
 #include "core/document/animation_desc.h"
+#include "core/document/filter_kinds.h"
 #include "core/document/graph_desc.h"
 #include "core/document/material_desc.h"
 #include "core/document/npr_desc.h"
@@ -264,13 +266,9 @@ struct ParamTable<GradientEnvironmentDesc> {
 using EnvironmentDesc = std::variant<ConstantEnvironmentDesc, GradientEnvironmentDesc>;
 
 // ---------------------------------------------------------------- camera, render
-struct CameraDesc {
-  Point3 look_from{0.f, 0.f, 5.f};
-  Point3 look_at{0.f};
-  Vec3 up{0.f, 1.f, 0.f};
-  float vfov = 40.f;           // vertical field of view, degrees
-  float aperture = 0.f;        // lens diameter; 0 is a pinhole
-  float focus_distance = 0.f;  // 0 focuses on look_at
+// The camera's settings are the block a compiled Camera is built from (CameraParams);
+// the rows below point into it.
+struct CameraDesc : CameraParams {
   bool operator==(const CameraDesc&) const = default;
 };
 template <>
@@ -288,9 +286,6 @@ struct ParamTable<CameraDesc> {
                      number("focus_distance", 0, 1e12, "Distance in focus; 0 focuses on look_at")
                          .log_slider(0.1, 1000))};
 };
-
-enum class PixelFilter { box, gaussian };
-inline constexpr std::array<std::string_view, 2> kPixelFilterNames = {"box", "gaussian"};
 
 struct RenderSettings {
   int width = 640;

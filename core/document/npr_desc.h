@@ -1,5 +1,5 @@
-// The NPR parts of the scene document: outline settings, painterly stroke
-// emitters and the painterly pixel filter. Included by desc.h.
+// The NPR parts of the scene document: outline settings and painterly stroke
+// emitters. Included by desc.h.
 #pragma once
 
 #include "core/math/types.h"
@@ -185,9 +185,5 @@ struct ParamTable<StrokeEmitterDesc> {
                                                "strokes; off, it sees the object under them (faster)")
                                             .labelled("In bounce light"))};
 };
-
-// ---------------------------------------------------------------- painterly pixel filter
-enum class PainterlyFilter { none, kuwahara, anisotropic };
-inline constexpr std::array<std::string_view, 3> kPainterlyFilterNames = {"none", "kuwahara", "anisotropic"};
 
 }  // namespace inkray

@@ -3,7 +3,6 @@
 #pragma once
 
 #include "core/math/types.h"
-#include "core/document/npr_desc.h"
 
 #include <algorithm>
 #include <array>
@@ -15,24 +14,6 @@ enum class LineType { depth, crease, intersection, material, object, silhouette 
 inline constexpr int kLineTypeCount = 6;
 inline constexpr std::array<std::string_view, kLineTypeCount> kLineTypeNames = {
     "depth", "crease", "intersection", "material", "object", "silhouette"};
-
-inline const LineStyleDesc& line_style(const OutlineDesc& d, LineType t) {
-  switch (t) {
-    case LineType::depth:
-      return d.depth;
-    case LineType::crease:
-      return d.crease;
-    case LineType::intersection:
-      return d.intersection;
-    case LineType::material:
-      return d.material;
-    case LineType::object:
-      return d.object;
-    case LineType::silhouette:
-      break;
-  }
-  return d.silhouette;
-}
 
 // Coverage is the fraction of stencil rays that see a break; a pixel's line
 // opacity is kLineGain times its mean, clamped to 1. With stencil points

@@ -4,7 +4,6 @@
 #pragma once
 
 #include "core/camera/camera.h"
-#include "core/document/desc.h"
 #include "core/world/line_setup.h"
 #include "core/world/view_settings.h"
 #include "core/world/world.h"

@@ -4,7 +4,7 @@
 // (core/compiler/compile_view.h); render threads and the resolve read only these.
 #pragma once
 
-#include "core/document/desc.h"
+#include "core/document/filter_kinds.h"
 #include "core/math/types.h"
 #include "core/world/line_types.h"
 

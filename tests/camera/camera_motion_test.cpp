@@ -8,7 +8,7 @@
 namespace inkray {
 namespace {
 
-CameraDesc at(Point3 from, Point3 target, float vfov) {
+CameraParams at(Point3 from, Point3 target, float vfov) {
   return {.look_from = from, .look_at = target, .vfov = vfov};
 }
 
@@ -20,9 +20,9 @@ void expect_same_ray(const Ray& a, const Ray& b, float tolerance) {
 }
 
 TEST(CameraMotion, EndsAreTheCamerasAtTheShuttersOpeningAndClosing) {
-  const CameraDesc open = at({-1.f, 0.f, 5.f}, {-1.f, 0.f, 0.f}, 30.f);
-  const CameraDesc close = at({1.f, 1.f, 4.f}, {0.5f, 0.f, 0.f}, 40.f);
-  const CameraDesc frame = at({0.f, 0.5f, 4.5f}, {0.f, 0.f, 0.f}, 35.f);
+  const CameraParams open = at({-1.f, 0.f, 5.f}, {-1.f, 0.f, 0.f}, 30.f);
+  const CameraParams close = at({1.f, 1.f, 4.f}, {0.5f, 0.f, 0.f}, 40.f);
+  const CameraParams frame = at({0.f, 0.5f, 4.5f}, {0.f, 0.f, 0.f}, 35.f);
   const Camera moving(frame, open, close, 64, 48);
   EXPECT_TRUE(moving.moves());
   for (const Vec2 film : {Vec2(0.f), Vec2(32.f, 24.f), Vec2(60.f, 5.f)}) {
@@ -44,7 +44,7 @@ TEST(CameraMotion, EndsAreTheCamerasAtTheShuttersOpeningAndClosing) {
 }
 
 TEST(CameraMotion, AStillCameraGivesTheSameRaysAtEveryInstant) {
-  const CameraDesc d = at({1.f, 2.f, 3.f}, {0.f, 0.f, 0.f}, 45.f);
+  const CameraParams d = at({1.f, 2.f, 3.f}, {0.f, 0.f, 0.f}, 45.f);
   const Camera still(d, d, d, 32, 32);
   EXPECT_FALSE(still.moves());
   const Camera plain(d, 32, 32);
@@ -60,8 +60,8 @@ TEST(CameraMotion, AStillCameraGivesTheSameRaysAtEveryInstant) {
 // A focus distance of 0 focuses on look_at at each end, and in between on the
 // interpolated distance: thin-lens rays of one film point meet there.
 TEST(CameraMotion, FocusFollowsTheTarget) {
-  CameraDesc open = at({0.f, 0.f, 4.f}, {0.f, 0.f, 0.f}, 30.f),
-             close = at({0.f, 0.f, 8.f}, {0.f, 0.f, 0.f}, 30.f);
+  CameraParams open = at({0.f, 0.f, 4.f}, {0.f, 0.f, 0.f}, 30.f),
+               close = at({0.f, 0.f, 8.f}, {0.f, 0.f, 0.f}, 30.f);
   open.aperture = close.aperture = 0.5f;
   const Camera moving(open, open, close, 32, 32);
   const Ray a = moving.generate_ray(Vec2(16.f), Vec2(0.1f, 0.5f), 0.5f);

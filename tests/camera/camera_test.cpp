@@ -8,8 +8,8 @@
 namespace inkray {
 namespace {
 
-CameraDesc desc() {
-  CameraDesc d;
+CameraParams params() {
+  CameraParams d;
   d.look_from = {1.f, 2.f, 3.f};
   d.look_at = {-2.f, 0.5f, -4.f};
   d.vfov = 50.f;
@@ -17,14 +17,14 @@ CameraDesc desc() {
 }
 
 TEST(Camera, CentreRayLooksAtTarget) {
-  const Camera cam(desc(), 200, 100);
+  const Camera cam(params(), 200, 100);
   const Ray r = cam.generate_ray({100.f, 50.f}, {0.5f, 0.5f});
-  const Vec3 expected = glm::normalize(desc().look_at - desc().look_from);
+  const Vec3 expected = glm::normalize(params().look_at - params().look_from);
   EXPECT_NEAR(glm::dot(r.d, expected), 1.f, 1e-6f);
 }
 
 TEST(Camera, VerticalFieldOfViewSpansTheImageHeight) {
-  const Camera cam(desc(), 200, 100);
+  const Camera cam(params(), 200, 100);
   const Ray top = cam.generate_ray({100.f, 0.f}, {0.5f, 0.5f});
   const Ray bottom = cam.generate_ray({100.f, 100.f}, {0.5f, 0.5f});
   EXPECT_NEAR(glm::degrees(std::acos(glm::dot(top.d, bottom.d))), 50.f, 1e-3f);
@@ -33,7 +33,7 @@ TEST(Camera, VerticalFieldOfViewSpansTheImageHeight) {
 }
 
 TEST(Camera, ProjectInvertsGenerateRay) {
-  const Camera cam(desc(), 320, 240);
+  const Camera cam(params(), 320, 240);
   Pcg32 rng(9);
   for (int i = 0; i < 100; ++i) {
     const Vec2 film(320.f * rng.next_float(), 240.f * rng.next_float());
@@ -44,11 +44,11 @@ TEST(Camera, ProjectInvertsGenerateRay) {
     EXPECT_NEAR(back.y, film.y, 1e-2f);
   }
   Vec2 unused;
-  EXPECT_FALSE(cam.project(desc().look_from - (desc().look_at - desc().look_from), &unused));
+  EXPECT_FALSE(cam.project(params().look_from - (params().look_at - params().look_from), &unused));
 }
 
 TEST(Camera, ThinLensRaysMeetOnTheFocusPlane) {
-  CameraDesc d = desc();
+  CameraParams d = params();
   d.aperture = 0.5f;
   d.focus_distance = 6.f;
   const Camera cam(d, 100, 100);

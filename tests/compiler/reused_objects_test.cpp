@@ -20,7 +20,7 @@ namespace {
 // point light, with crease lines so moved meshes get their patches again.
 SceneDesc many_objects() {
   SceneDesc s = testing::sized_scene(48, 32);
-  s.camera = {.look_from = Point3(0.f, 6.f, 14.f), .look_at = Point3(0.f, 0.f, 0.f)};
+  s.camera = {{.look_from = Point3(0.f, 6.f, 14.f), .look_at = Point3(0.f, 0.f, 0.f)}};
   s.outlines.crease.enabled = true;
   s.materials = {{"grey", DiffuseDesc{Color(0.6f)}, {}},
                  {"red", DiffuseDesc{Color(0.8f, 0.2f, 0.1f)}, {}},

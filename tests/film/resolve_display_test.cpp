@@ -5,6 +5,7 @@
 #include "core/compiler/compile_view.h"
 #include "core/film/resolve.h"
 #include "core/image/image_io.h"
+#include "core/npr/outlines/outline_styles.h"
 #include "core/render/display_encode.h"
 
 #include <gtest/gtest.h>

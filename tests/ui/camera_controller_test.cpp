@@ -9,7 +9,7 @@ namespace inkray {
 namespace {
 
 CameraDesc test_camera() {
-  return {.look_from = Point3(0.f, 0.f, 5.f), .look_at = Point3(0.f), .vfov = 40.f};
+  return {{.look_from = Point3(0.f, 0.f, 5.f), .look_at = Point3(0.f), .vfov = 40.f}};
 }
 
 TEST(CameraController, OrbitKeepsTargetAndDistance) {

@@ -12,7 +12,7 @@ namespace {
 
 SceneDesc two_spheres() {
   SceneDesc s = testing::sized_scene(200, 100);
-  s.camera = {.look_from = Point3(0.f, 0.f, 10.f), .look_at = Point3(0.f)};
+  s.camera = {{.look_from = Point3(0.f, 0.f, 10.f), .look_at = Point3(0.f)}};
   s.materials.push_back({"m", DiffuseDesc{}, {}});
   s.objects = {testing::make_object("left", SphereDesc{Point3(-2.f, 0.f, 0.f), 1.f}, "m"),
                testing::make_object("right", SphereDesc{Point3(2.f, 0.f, 0.f), 1.f}, "m")};

@@ -92,7 +92,7 @@ TEST(Placement, BallsAreMeasuredAsBallsNotBoxes) {
   // Three balls in a row fill the view's middle; the new one finds the gap above them
   // that their boxes would hide.
   SceneDesc s = testing::sized_scene(800, 450);
-  s.camera = {.look_from = Point3(0.f, 2.6f, 9.f), .look_at = Point3(0.f, 0.9f, 0.f), .vfov = 32.f};
+  s.camera = {{.look_from = Point3(0.f, 2.6f, 9.f), .look_at = Point3(0.f, 0.9f, 0.f), .vfov = 32.f}};
   for (float x : {-2.4f, 0.f, 2.4f}) {
     ObjectDesc ball;
     ball.name = "ball" + std::to_string(int(x * 10));

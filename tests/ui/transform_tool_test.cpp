@@ -10,7 +10,7 @@ namespace {
 
 // Looking down -Z from 10 units: the image is the XY plane, Y up.
 ViewMapping front_view() {
-  const CameraDesc c{.look_from = Point3(0.f, 0.f, 10.f), .look_at = Point3(0.f)};
+  const CameraParams c{.look_from = Point3(0.f, 0.f, 10.f), .look_at = Point3(0.f)};
   return {Camera(c, 200, 100), Vec2(0.f), 2.f};
 }
 

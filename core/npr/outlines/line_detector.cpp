@@ -1,6 +1,7 @@
 #include "core/npr/outlines/line_detector.h"
 
 #include "core/npr/outlines/line_gain.h"
+#include "core/npr/outlines/outline_styles.h"
 #include "core/npr/outlines/perceived_surface.h"
 #include "core/sampling/warp.h"
 

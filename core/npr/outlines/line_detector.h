@@ -6,6 +6,7 @@
 // How many stencil rays a sample traces is line_sampling.h's decision.
 #pragma once
 
+#include "core/document/npr_desc.h"
 #include "core/world/line_types.h"
 #include "core/npr/outlines/perceived_surface.h"
 #include "core/integrator/path_tracer.h"
