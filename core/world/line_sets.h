@@ -19,7 +19,7 @@ enum class LineModulation : uint8_t {
   none,       // constant
   along,      // from the chain's start (0) to its end (1)
   depth,      // near (0) to far (1) over the chains of the image
-  curvature,  // straight (0) to turning by a radian per pixel or more (1)
+  curvature,  // straight (0) to turning by a radian per 10 pixels at 1080 lines or more (1)
   light,      // dark (0) to light (1) under the line
   coverage,   // how solidly the line was found: its resolved opacity
 };

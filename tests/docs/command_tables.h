@@ -122,7 +122,7 @@ inline constexpr Rewrite kRewrites[] = {
      "--threads", Rule::set, "2", "", "CI has 2 cores"},
     {"inkray-render", "--frames", Rule::two_frames, "", "", "two frames show the pattern and the range"},
     {"inkray-bench-coherence inkray-bench-final", "--frames", Rule::at_most, "2", "", "a count of frames"},
-    {"inkray-bench-outlines", "--runs", Rule::set, "1", "1", "one run prints the table"},
+    {"inkray-bench-outlines inkray-bench-lines", "--runs", Rule::set, "1", "1", "one run prints the table"},
     {"inkray-bench-strokes", "--counts", Rule::set, "0,1000", "0,1000", "100,000 strokes take seconds"},
     {"inkray-bench-strokes", "--passes", Rule::set, "1", "1", "one pass a row"},
     {"inkray-bench-strokes", "--repeats", Rule::set, "1", "1", "one repeat a row"},
