@@ -40,6 +40,9 @@ must hold one window with one range of samples for all its pixels.
   --denoise             write OUT denoised and the image as merged beside it as OUT_raw.EXT; the
                         partials must keep the denoiser's features (inkray-render --samples with
                         --denoise)
+  --lines-svg FILE      also write the lines as an SVG file, as inkray-render --lines-svg does
+  --lines-svg-image     put the image under the lines in the SVG
+  --lines-pdf FILE      also write the lines as a one-page PDF file
   --threads N           worker threads for the painterly filter (default: one per hardware thread)
   -q, --quiet           print nothing on success
   -h, --help            this text
@@ -51,6 +54,7 @@ struct MergeOptions {
   fs::path output;
   std::vector<fs::path> partials;
   std::vector<AovFile> aovs;
+  LineFiles lines;
   int threads = 0;
   bool denoise = false;
   bool quiet = false;
@@ -84,6 +88,18 @@ std::optional<MergeOptions> parse(int argc, char** argv, std::string* error) {
       o.quiet = true;
     } else if (arg == "--denoise") {
       o.denoise = true;
+    } else if (arg == "--lines-svg-image") {
+      o.lines.svg_image = true;
+    } else if (arg == "--lines-svg" || arg == "--lines-pdf") {
+      const auto v = value();
+      if (!v) return std::nullopt;
+      const std::string_view extension = arg == "--lines-svg" ? ".svg" : ".pdf";
+      if (!ends_with(std::string(*v), extension)) {
+        *error = std::string(arg) + ": " + std::string(*v) + ": expected a file ending in " +
+                 std::string(extension);
+        return std::nullopt;
+      }
+      (arg == "--lines-svg" ? o.lines.svg : o.lines.pdf) = std::string(*v);
     } else if (arg == "--threads") {
       const auto v = value();
       if (!v) return std::nullopt;
@@ -118,8 +134,14 @@ std::optional<MergeOptions> parse(int argc, char** argv, std::string* error) {
         "--help)";
     return std::nullopt;
   }
-  if (writes_partial(o.output) && (!o.aovs.empty() || o.denoise)) {
-    *error = std::string(o.denoise ? "--denoise" : "--aov") +
+  if (o.lines.svg_image && o.lines.svg.empty()) {
+    *error = "--lines-svg-image puts the image under the lines of --lines-svg FILE: add it";
+    return std::nullopt;
+  }
+  if (writes_partial(o.output) && (!o.aovs.empty() || o.denoise || o.lines.any())) {
+    *error = std::string(o.denoise         ? "--denoise"
+                         : !o.aovs.empty() ? "--aov"
+                                           : "--lines-svg/--lines-pdf") +
              ": a partial output keeps the partials' sums; give it when merging to an image";
     return std::nullopt;
   }
@@ -134,6 +156,8 @@ std::optional<MergeOptions> parse(int argc, char** argv, std::string* error) {
       *error = planned.file.string() + ": unknown image format (expected .png, .pfm or .exr)";
       return std::nullopt;
     }
+  if (!o.lines.svg.empty()) outputs.push_back({"--lines-svg " + o.lines.svg.string(), o.lines.svg});
+  if (!o.lines.pdf.empty()) outputs.push_back({"--lines-pdf " + o.lines.pdf.string(), o.lines.pdf});
   for (const fs::path& p : o.partials) {
     std::error_code ec;
     if (fs::equivalent(p, o.output, ec)) {
@@ -194,8 +218,15 @@ int run(const MergeOptions& opt) {
     if (!desc.animation.empty()) desc = scene_at_frame(desc, desc.render.frame);
     ThreadBudget pool(opt.threads);
     if (opt.denoise) denoised = denoise(*merged.film, &pool);
-    switch (write_film_outputs(*merged.film, compile_resolve_settings(desc.render, desc.outlines), opt.output,
-                               opt.aovs, &error, &pool, {}, {}, denoised ? &denoised->image : nullptr)) {
+    std::vector<std::string> problems;
+    const ResolveSettings resolve =
+        compile_resolve_settings(desc, read_line_brushes(desc.base_dir), &problems);
+    if (!problems.empty()) {
+      std::fprintf(stderr, "error: %s\n", problems.front().c_str());
+      return 1;
+    }
+    switch (write_film_outputs(*merged.film, resolve, opt.output, opt.aovs, &error, &pool, {}, {},
+                               denoised ? &denoised->image : nullptr, opt.lines)) {
       case OutputsWritten::all:
         break;
       case OutputsWritten::cancelled:

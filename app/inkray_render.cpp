@@ -80,11 +80,14 @@ struct FrameFiles {
   std::optional<int> frame;  // set with --frames
   fs::path output, checkpoint;
   std::vector<AovFile> aovs;
+  LineFiles lines;
   bool all_exist() const {
     std::error_code ec;
     if (!fs::exists(output, ec)) return false;
     for (const AovFile& a : aovs)
       if (!fs::exists(a.file, ec)) return false;
+    for (const fs::path& file : {lines.svg, lines.pdf})
+      if (!file.empty() && !fs::exists(file, ec)) return false;
     return true;
   }
 };
@@ -97,6 +100,10 @@ FrameFiles frame_files(const RenderCliOptions& opt, std::optional<int> frame) {
   for (const auto& a : opt.aovs)
     if (!a.file.empty())
       f.aovs.push_back({*aov_from_name(a.name), frame ? expand_frame_pattern(a.file, *frame) : a.file});
+  const auto framed = [&](const fs::path& file) {
+    return frame && !file.empty() ? expand_frame_pattern(file, *frame) : file;
+  };
+  f.lines = {framed(opt.lines_svg), framed(opt.lines_pdf), opt.lines_svg_image};
   return f;
 }
 
@@ -343,7 +350,8 @@ int render_frame(Renderer& r, SceneDesc desc, const FrameFiles& files, Cancel::C
     }
     // Every output is staged before any is replaced: a failed AOV leaves no image behind.
     switch (write_render_outputs(session, files.output, files.aovs, &error, Cancel{},
-                                 opt.crop ? window : PixelWindow{}, denoised ? &denoised->image : nullptr)) {
+                                 opt.crop ? window : PixelWindow{}, denoised ? &denoised->image : nullptr,
+                                 files.lines)) {
       case OutputsWritten::all:
         break;
       case OutputsWritten::cancelled:

@@ -46,6 +46,11 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
                         rendered beside it as OUT_raw.EXT; prints the denoised image's estimated
                         error. With --samples, the partial keeps the denoiser's features for
                         inkray-merge --denoise
+  --lines-svg FILE      also write the lines as an SVG file: each line a filled outline in its
+                        style, a layer per line set (the outline types' colours without sets),
+                        lines seen in mirrors and through glass included
+  --lines-svg-image     put the image under the lines in the SVG (embedded as a PNG)
+  --lines-pdf FILE      also write the lines as a one-page PDF file, a point per pixel
   --noise-threshold E   adaptive sampling: a 16x16 tile whose estimated relative error (smoothed
                         over its neighbours) is below E stops taking samples; the others go on up
                         to --spp, within --time
@@ -61,7 +66,7 @@ usage: inkray-render SCENE.json -o OUT.(png|pfm|exr) [options]
 Final renders on many machines (docs/final-renders.md):
   --frames A-B[:STEP]   render frames A to B (both included) every STEP frames; "all" is the
                         scene's render.frame_start to frame_end, and a single number one frame.
-                        A run of '#' in -o and in --aov files becomes the frame number, zero-padded
+                        A run of '#' in -o, --aov and --lines-* files becomes the frame number, zero-padded
                         (out_####.png -> out_0001.png); more than one frame needs it, and a range
                         in which two frames would write the same file is refused
   --samples A B         render only samples A to B (B excluded) of every pixel, as they fall in a
@@ -206,6 +211,8 @@ std::string check_frame_names(const RenderCliOptions& o, const std::vector<int>&
   if (o.checkpoint_minutes || o.resume) patterns.push_back({"the checkpoint", checkpoint_path(o.output)});
   for (const auto& a : o.aovs)
     if (!a.file.empty()) patterns.push_back({"--aov " + a.name + "=" + a.file.string(), a.file});
+  if (!o.lines_svg.empty()) patterns.push_back({"--lines-svg " + o.lines_svg.string(), o.lines_svg});
+  if (!o.lines_pdf.empty()) patterns.push_back({"--lines-pdf " + o.lines_pdf.string(), o.lines_pdf});
   const auto name_of = [&](uint32_t pattern, uint32_t frame) {
     return expand_frame_pattern(patterns[pattern].file, frames[frame]).lexically_normal().string();
   };
@@ -282,6 +289,9 @@ const std::vector<cli::Option<Options>>& render_options() {
       text_option({"--write-scene"}, &Options::write_scene),
       number_option({"--spp"}, &Options::spp, param_range<int>(&RenderSettings::spp)),
       flag_option({"--denoise"}, &Options::denoise),
+      text_option({"--lines-svg"}, &Options::lines_svg),
+      text_option({"--lines-pdf"}, &Options::lines_pdf),
+      flag_option({"--lines-svg-image"}, &Options::lines_svg_image),
       decimal_option(
           "--noise-threshold", &Options::noise_threshold, [](double t) { return t > 0.0 && t <= 10.0; },
           "a relative error in (0, 10], e.g. 0.01"),
@@ -448,6 +458,16 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       return std::nullopt;
     }
   }
+  if (o.samples && (!o.lines_svg.empty() || !o.lines_pdf.empty())) {
+    *error = std::string(!o.lines_svg.empty() ? "--lines-svg" : "--lines-pdf") +
+             ": a slice of samples (--samples) writes a partial, whose lines are drawn when the partials "
+             "are merged: give it to inkray-merge";
+    return std::nullopt;
+  }
+  if (o.lines_svg_image && o.lines_svg.empty()) {
+    *error = "--lines-svg-image puts the image under the lines of --lines-svg FILE: add it";
+    return std::nullopt;
+  }
   // More than one frame into one file would overwrite it frame after frame.
   const bool many_frames = o.frames && (o.frames->all || o.frames->last > o.frames->first);
   if (many_frames) {
@@ -461,6 +481,13 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
     for (const auto& a : o.aovs)
       if (!a.file.empty() && !has_frame_pattern(a.file)) {
         *error = "--frames renders several frames: --aov " + a.name + "=" + a.file.string() +
+                 " needs a run of '#' for the frame number";
+        return std::nullopt;
+      }
+    for (const auto& [option, file] :
+         {std::pair{"--lines-svg", o.lines_svg}, std::pair{"--lines-pdf", o.lines_pdf}})
+      if (!file.empty() && !has_frame_pattern(file)) {
+        *error = "--frames renders several frames: " + std::string(option) + " " + file.string() +
                  " needs a run of '#' for the frame number";
         return std::nullopt;
       }
@@ -487,6 +514,15 @@ std::optional<RenderCliOptions> parse_render_cli(int argc, const char* const* ar
       *error = planned.file.string() + ": unknown image format (expected .png, .pfm or .exr)";
       return std::nullopt;
     }
+  }
+  for (const auto& [option, file, extension] :
+       {std::tuple{"--lines-svg", o.lines_svg, ".svg"}, std::tuple{"--lines-pdf", o.lines_pdf, ".pdf"}}) {
+    if (file.empty()) continue;
+    if (file.extension() != extension) {
+      *error = std::string(option) + ": " + file.string() + ": expected a file ending in " + extension;
+      return std::nullopt;
+    }
+    outputs.push_back({std::string(option) + " " + file.string(), expand_frame_pattern(file, frame)});
   }
   if (std::string problem = check_outputs(outputs); !problem.empty()) {
     *error = std::move(problem);

@@ -44,6 +44,10 @@ struct RenderCliOptions {
   std::optional<double> noise_threshold;
   std::optional<int> min_spp;
   std::optional<FrameRange> frames;
+  // --lines-svg / --lines-pdf: the lines as vector files (docs/lines.md), written with
+  // the image; --lines-svg-image puts the image under the lines in the SVG.
+  std::filesystem::path lines_svg, lines_pdf;
+  bool lines_svg_image = false;
   bool quiet = false;
   bool help = false;
   bool node_reference = false;  // print the material-graph node reference (Markdown) and exit

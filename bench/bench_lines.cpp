@@ -5,7 +5,7 @@
 // strokes made, their samples and the pixels they changed.
 #include "bench/bench_stats.h"
 #include "core/math/hash.h"
-#include "core/npr/lines/line_presets.h"
+#include "core/document/line_set_desc.h"
 #include "core/npr/lines/line_strokes.h"
 #include "core/npr/lines/stroke_outline.h"
 #include "core/npr/lines/stroke_raster.h"
@@ -117,7 +117,9 @@ int main(int argc, char** argv) {
     if (!only.empty() && name != only) continue;
     LineSet set;
     set.name = std::string(name);
-    set.style = line_preset(name);
+    LineSetStyleDesc preset;
+    ParamPresets<LineSetStyleDesc>::apply(name, preset);
+    static_cast<LineStyleParams&>(set.style) = preset;
     if (name == "brush") set.style.brush = bristles;
     std::vector<double> style_ms, draw_ms, outline_ms;
     size_t strokes_made = 0, samples = 0, drawn = 0;

@@ -13,6 +13,7 @@
 #include "core/document/memory_budget.h"
 #include "core/document/scene_checks.h"
 #include "core/geometry/instance_placement.h"
+#include "core/npr/lines/hidden_lines.h"
 #include "core/npr/outlines/line_detector.h"
 
 #include <algorithm>
@@ -68,9 +69,10 @@ std::optional<Shutter> shutter_states(const SceneDesc& desc) {
 }
 
 // What every compiled scene of the document carries whatever changed.
-void set_view(const SceneDesc& desc, const std::optional<Shutter>& shutter, RenderScene& scene) {
+void set_view(const SceneDesc& desc, const std::optional<Shutter>& shutter, const LineBrushLoader& brushes,
+              std::vector<std::string>& errors, RenderScene& scene) {
   scene.sampling = compile_sample_settings(desc.render);
-  scene.resolve = compile_resolve_settings(desc.render, desc.outlines);
+  scene.resolve = compile_resolve_settings(desc, brushes, &errors);
   const RenderSettings& r = desc.render;
   // The frame's own instant in the shutter, which rays without a time of their own see.
   const float frame_time = r.motion_blur() ? -r.shutter_open / (r.shutter_close - r.shutter_open) : 0.f;
@@ -229,10 +231,21 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   counters_.files_read = assets_.files_read();
   if (!result.errors.empty()) return result;
   const std::optional<Shutter> shutter = shutter_states(desc);
+  const LineBrushLoader brushes = [&](const StrokeEmitterDesc& brush, std::string* error) {
+    return std::shared_ptr<const AlphaTexture>(assets_.brush(brush, desc.base_dir, error));
+  };
 
   const auto remember = [&](std::shared_ptr<RenderScene> scene, size_t document_materials) {
     scene->lines =
         make_line_setup(desc.outlines, *scene);  // reads the world's bounds, so once it is in place
+    // Hidden lines are found on the world's surfaces from this view's camera.
+    const auto& sets = scene->resolve.sets;
+    if (scene->lines.active &&
+        std::any_of(sets.begin(), sets.end(), [](const LineSet& s) { return s.select.hidden; })) {
+      scene->resolve.hidden =
+          std::make_shared<const std::vector<Chain>>(hidden_chains(*scene, options.cancel));
+      scene->resolve.hidden_width = scene->sampling.width;
+    }
     last_desc_ = desc;
     last_ = scene;
     last_document_materials_ = document_materials;
@@ -246,7 +259,8 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
     // Nothing of the world changed: a new view of the same one, with the crease
     // patches of a new threshold.
     auto scene = std::make_shared<RenderScene>(*last_);
-    set_view(desc, shutter, *scene);
+    set_view(desc, shutter, brushes, result.errors, *scene);
+    if (!result.errors.empty()) return result;
     if (!same_crease_patches(last_desc_->outlines, desc.outlines)) {
       auto world = std::make_shared<World>(*last_->world);
       set_crease_patches(desc.outlines, placed_, *world, assets_);
@@ -257,7 +271,8 @@ CompileResult SceneCompiler::compile_world(const SceneDesc& desc, const CompileO
   }
 
   auto scene = std::make_shared<RenderScene>();
-  set_view(desc, shutter, *scene);
+  set_view(desc, shutter, brushes, result.errors, *scene);
+  if (!result.errors.empty()) return result;
   auto world = std::make_shared<World>();
   std::vector<std::vector<std::string>> material_keys = material_keys_;
   if (!last_ || result.changes.has(Stage::material)) {

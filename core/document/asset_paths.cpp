@@ -109,6 +109,16 @@ void walk_asset_paths(Scene& scene, const Visit& f) {
         visit_params(s, finder);
       },
       every);
+  section(
+      scene.outlines.sets, "outlines.sets", "line set",
+      [&](const std::string& at, auto& set, const AssetSite& owner) {
+        // A set's one path is its brush image, read only by the image brush.
+        AssetSite line_set = owner;
+        line_set.in_use = set.style.brush == LineBrush::image;
+        Finder finder{at, line_set, f};
+        visit_params(set, finder);
+      },
+      every);
 }
 
 }  // namespace

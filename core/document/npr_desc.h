@@ -3,11 +3,13 @@
 #pragma once
 
 #include "core/math/types.h"
+#include "core/document/line_set_desc.h"
 #include "core/document/params.h"
 
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace inkray {
 
@@ -57,6 +59,9 @@ struct OutlineDesc {
   LineStyleDesc depth{false, Color(0.f), 1.f, 1.f, 0.1f};
   LineStyleDesc intersection{false, Color(0.f), 1.f, 1.f, 0.f};
   bool enabled = false;  // master switch; a scene without "outlines" draws none
+  // Line sets: with none, each line type is drawn pixel by pixel in its own colour as
+  // above; with any, the lines are chained and drawn as the sets' styled strokes.
+  std::vector<LineSetDesc> sets{};
 
   bool any_line() const {
     return enabled && (silhouette.enabled || object.enabled || material.enabled || crease.enabled ||
@@ -110,7 +115,11 @@ struct ParamTable<OutlineDesc> {
                                       "along feature edges sharper than that")),
       row(&OutlineDesc::depth,
           group("depth", "Where one surface occludes another more than `threshold` (relative) further away")),
-      row(&OutlineDesc::intersection, group("intersection", "Where two objects cross"))};
+      row(&OutlineDesc::intersection, group("intersection", "Where two objects cross")),
+      row(&OutlineDesc::sets,
+          at(Stage::resolve, list("sets",
+                                  "Line sets: each takes the lines of some types, objects and paths and "
+                                  "draws them as strokes in its style; none draws plain lines")))};
 };
 
 // ---------------------------------------------------------------- painterly strokes

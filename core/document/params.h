@@ -214,4 +214,15 @@ template <class D, class V>
 requires ParamGroup<D>
 constexpr void visit_params(D& desc, V& v) { for_each_param(desc, v); }
 
+// Named sets of values a struct may start from (a line style's "ink" or "pencil"):
+// the editor shows a Preset menu above such a struct's widgets. There is no general
+// definition: a struct without presets has none.
+template <class S>
+struct ParamPresets;
+template <class S>
+concept HasPresets = requires(S& s, std::string_view name) {
+  ParamPresets<S>::names.size();
+  ParamPresets<S>::apply(name, s);
+};
+
 }  // namespace inkray

@@ -49,6 +49,9 @@ StageSet changed_stages(const SceneDesc& before, const SceneDesc& after) {
   out.add(changed_stages(before.camera, after.camera, Stage::camera));
   out.add(changed_stages(before.render, after.render, Stage::sampling));
   out.add(changed_stages(before.outlines, after.outlines, Stage::sampling));
+  // A film keeps the surfaces chains are labelled with only while there are line
+  // sets (film_chains.h): the first set, or the last one gone, starts a new film.
+  if (before.outlines.sets.empty() != after.outlines.sets.empty()) out.add(Stage::sampling);
   out.add(changed_stages(before.environment, after.environment, Stage::light));
   diff_list(before.materials, after.materials, Stage::material, out, material_changes);
   diff_list(before.objects, after.objects, Stage::object, out,

@@ -245,6 +245,21 @@ RgbImage Film::resolve() const {
   return img;
 }
 
+Color Film::mean_radiance(int x, int y) const {
+  const size_t i = index(x, y);
+  const uint32_t n = count_[0][i] + count_[1][i];
+  return n ? Color((sum_[0][i] + sum_[1][i]) / double(n)) : Color(0.f);
+}
+
+Film::Surface Film::surface(int x, int y) const {
+  const size_t i = index(x, y);
+  Surface s;
+  if (!depth_sum_.empty() && hit_count_[i]) s.depth = float(depth_sum_[i] / double(hit_count_[i]));
+  if (!object_id_.empty()) s.object = std::max(object_id_[i], -1);
+  if (!material_id_.empty()) s.material = std::max(material_id_[i], -1);
+  return s;
+}
+
 RgbImage Film::resolve_aov(Aov aov) const {
   RgbImage img{width_, height_, std::vector<Color>(size_t(width_) * size_t(height_), Color(0.f))};
   if (is_outline_aov(aov)) {

@@ -142,6 +142,16 @@ class Film {
 
   // Mean radiance per pixel.
   RgbImage resolve() const;
+  // One pixel's mean radiance (black without samples).
+  Color mean_radiance(int x, int y) const;
+  // The surface a pixel's samples saw first, as far as the film keeps it: mean camera
+  // distance of the hits (0: none, or no depth kept), and the ids of its first sample
+  // (-1: nothing hit, or not kept). What chains are labelled with (film_chains.h).
+  struct Surface {
+    float depth = 0.f;
+    int object = -1, material = -1;
+  };
+  Surface surface(int x, int y) const;
   // AOV image: averages for albedo/normal/depth, ids as floats (-1 where nothing
   // was hit), line opacities in [0, 1] for the outline AOVs.
   RgbImage resolve_aov(Aov aov) const;

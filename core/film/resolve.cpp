@@ -1,6 +1,8 @@
 // The final image, and what its painterly filter will cost.
 #include "core/film/resolve.h"
 
+#include "core/film/film_chains.h"
+#include "core/npr/lines/stroke_raster.h"
 #include "core/npr/painterly_filter.h"
 
 #include <algorithm>
@@ -41,9 +43,15 @@ bool same_base(const ResolveSettings& a, const ResolveSettings& b) {
          (a.painterly_radius == b.painterly_radius && a.painterly_sharpness == b.painterly_sharpness);
 }
 
-FilmLines gather_lines(const Film& film) {
-  FilmLines lines{film.width(), film.height(), {}, {}};
+FilmLines gather_lines(const Film& film, const ResolveSettings& settings) {
+  FilmLines lines;
+  lines.width = film.width(), lines.height = film.height();
   if (!film.has_lines()) return lines;
+  if (!settings.sets.empty()) {
+    lines.chains = film_chains(film, settings.material_paths);
+    lines.chained = true;
+    lines.chained_paths = settings.material_paths;
+  }
   for (int y = 0; y < film.height(); ++y) {
     for (int x = 0; x < film.width(); ++x) {
       const LineSample m = film.line_mean(x, y);
@@ -55,10 +63,30 @@ FilmLines gather_lines(const Film& film) {
   return lines;
 }
 
+std::vector<Chain> chains_to_draw(const std::vector<Chain>& film_chains, const ResolveSettings& settings,
+                                  int width) {
+  std::vector<Chain> chains = film_chains;
+  if (!settings.hidden || settings.hidden_width <= 0) return chains;
+  // A preview film is a fraction of the full image: its hidden lines are that much smaller.
+  const float scale = float(width) / float(settings.hidden_width);
+  for (Chain c : *settings.hidden) {
+    for (ChainPoint& q : c.points) q.p *= scale, q.curvature /= scale;
+    chains.push_back(std::move(c));
+  }
+  return chains;
+}
+
 // Line colours go over the filtered image, so the filter never smears them.
 void composite_lines(const FilmLines& lines, const ResolveSettings& settings, const DisplayEncoding& display,
                      RgbImage& image) {
   if (image.width != lines.width || image.height != lines.height) return;
+  if (!settings.sets.empty()) {
+    if (lines.chained)
+      draw_strokes(
+          stroke_chains(chains_to_draw(lines.chains, settings, image.width), settings.sets, image.height),
+          display, image);
+    return;
+  }
   const DisplayMapping mapping(display);
   for (size_t i = 0; i < lines.pixels.size(); ++i) {
     const LineSample& m = lines.means[i];
@@ -83,14 +111,15 @@ void composite_lines(const FilmLines& lines, const ResolveSettings& settings, co
 RgbImage resolve_final(const Film& film, const ResolveSettings& settings, const DisplayEncoding& display,
                        ThreadBudget* pool, const Cancel& cancel) {
   RgbImage image = resolve_base(film, settings, pool, cancel);
-  if (!image.pixels.empty()) composite_lines(gather_lines(film), settings, display, image);  // else cut short
+  if (!image.pixels.empty())
+    composite_lines(gather_lines(film, settings), settings, display, image);  // else cut short
   return image;
 }
 
 RgbImage resolve_final(const Film& film, RgbImage radiance, const ResolveSettings& settings,
                        const DisplayEncoding& display, ThreadBudget* pool, const Cancel& cancel) {
   RgbImage image = resolve_base(std::move(radiance), settings, film.height(), pool, cancel);
-  if (!image.pixels.empty()) composite_lines(gather_lines(film), settings, display, image);
+  if (!image.pixels.empty()) composite_lines(gather_lines(film, settings), settings, display, image);
   return image;
 }
 

@@ -16,6 +16,7 @@
 #include "core/base/parallel.h"
 #include "core/film/film.h"
 #include "core/image/view_transform.h"
+#include "core/world/chain.h"
 #include "core/world/render_scene.h"
 
 namespace inkray {
@@ -34,18 +35,31 @@ RgbImage resolve_base(RgbImage radiance, const ResolveSettings& settings, int fu
 // cached one serves (only line settings changed).
 bool same_base(const ResolveSettings& a, const ResolveSettings& b);
 // The pixels of a film that have lines, with their mean line samples (a few
-// percent of the image): gathered once per state of the film, so compositing
-// again for another display, line colour or opacity touches only them.
+// percent of the image), and, when the settings have line sets, the lines as
+// chains: gathered once per state of the film, so compositing again for another
+// display, line colour, opacity or style touches only them.
 struct FilmLines {
   int width = 0, height = 0;      // the film's
   std::vector<uint32_t> pixels;   // row-major indices into the film's image
   std::vector<LineSample> means;  // Film::line_mean of each
+  bool chained = false;           // `chains` were built, with these material paths
+  std::vector<uint8_t> chained_paths;
+  std::vector<Chain> chains;
+  // Whether these lines serve `settings` as they are: chains where it has line sets.
+  bool serve(const ResolveSettings& settings) const {
+    return settings.sets.empty() || (chained && chained_paths == settings.material_paths);
+  }
 };
-FilmLines gather_lines(const Film& film);
+FilmLines gather_lines(const Film& film, const ResolveSettings& settings);
+// The chains line sets draw on an image `width` pixels wide: the film's, and the
+// view's hidden lines scaled from the full image to it.
+std::vector<Chain> chains_to_draw(const std::vector<Chain>& film_chains, const ResolveSettings& settings,
+                                  int width);
 // Composites the lines for `display` over `image` (resolve_base of their film) in
-// place; pixels without lines are left as they are, and an image of another size
-// is not touched. A new exposure or view transform composites again over a copy
-// of a cached base.
+// place: pixel by pixel in each type's colour, or as the line sets' strokes where
+// there are sets (core/npr/lines/line_strokes.h). Pixels without lines are left as
+// they are, and an image of another size is not touched. A new exposure or view transform composites again
+// over a copy of a cached base.
 void composite_lines(const FilmLines& lines, const ResolveSettings& settings, const DisplayEncoding& display,
                      RgbImage& image);
 

@@ -129,6 +129,11 @@ void ExportJob::run(ExportRequest request) {
   if (request.denoise)
     planned.push_back({raw_image_path(request.output).string(), raw_image_path(request.output)});
   for (const AovFile& a : aov_files) planned.push_back({a.file.string(), a.file});
+  LineFiles line_files;
+  if (request.lines_svg) line_files.svg = std::filesystem::path(request.output).replace_extension(".svg");
+  if (request.lines_pdf) line_files.pdf = std::filesystem::path(request.output).replace_extension(".pdf");
+  for (const auto& file : {line_files.svg, line_files.pdf})
+    if (!file.empty()) planned.push_back({file.string(), file});
   if (std::string problem = check_outputs(planned); !problem.empty()) return finish(std::move(problem));
   std::tie(request.scene.render.width, request.scene.render.height) = export_resolution(request);
   const int spp = std::max(request.spp, 1);
@@ -180,7 +185,7 @@ void ExportJob::run(ExportRequest request) {
   }
   std::string error;
   if (write_render_outputs(session, request.output, aov_files, &error, Cancel(&cancelled_), {},
-                           denoised ? &denoised->image : nullptr) != OutputsWritten::all)
+                           denoised ? &denoised->image : nullptr, line_files) != OutputsWritten::all)
     return finish(cancelled_.load() ? "cancelled" : error);
   {
     std::lock_guard lock(mutex_);

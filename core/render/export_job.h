@@ -30,7 +30,9 @@ struct ExportRequest {
   double noise_target = 0.0;
   bool denoise = false;   // the image is denoised; the raw one is written as <stem>_raw<ext>
   std::vector<Aov> aovs;  // written as "<stem>_<aov><ext>"
-  int threads = 0;        // 0: every hardware thread (export_threads())
+  // The lines as vectors (render_outputs.h, LineFiles), written as "<stem>.svg" / "<stem>.pdf".
+  bool lines_svg = false, lines_pdf = false;
+  int threads = 0;  // 0: every hardware thread (export_threads())
   // The export's resolution, leaving the document alone; 0 keeps the scene's. With one
   // side set, the other follows the scene's aspect.
   int width = 0, height = 0;

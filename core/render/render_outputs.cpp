@@ -3,10 +3,13 @@
 #include "core/render/render_outputs.h"
 
 #include "core/film/aov_display.h"
+#include "core/film/film_chains.h"
 #include "core/film/resolve.h"
 #include "core/image/image_io.h"
 #include "core/io/atomic_file.h"
 #include "core/io/output_set.h"
+#include "core/npr/lines/line_strokes.h"
+#include "core/npr/lines/vector_lines.h"
 
 namespace inkray {
 namespace {
@@ -21,6 +24,33 @@ RgbImage crop_image(RgbImage image, const PixelWindow& crop) {
   return out;
 }
 
+// The film's lines as vector files: its chains drawn by the line sets, or by the
+// outline types' plain sets (ResolveSettings::plain_sets) where there are none.
+bool stage_line_files(const Film& film, const ResolveSettings& settings, const RgbImage& image,
+                      const LineFiles& files, OutputSet& outputs, std::string* error) {
+  const std::vector<LineSet>& sets = settings.sets.empty() ? settings.plain_sets : settings.sets;
+  const std::vector<LineStroke> strokes =
+      stroke_chains(chains_to_draw(film_chains(film, settings.material_paths), settings, film.width()), sets,
+                    film.height());
+  std::string bytes;
+  if (!files.svg.empty()) {
+    if (!encode_lines_svg(film.width(), film.height(), strokes, sets, files.svg_image ? &image : nullptr,
+                          &bytes, error)) {
+      *error = files.svg.string() + ": " + *error;
+      return false;
+    }
+    if (!outputs.stage(files.svg, bytes, error)) return false;
+  }
+  if (!files.pdf.empty()) {
+    if (!encode_lines_pdf(film.width(), film.height(), strokes, nullptr, &bytes, error)) {
+      *error = files.pdf.string() + ": " + *error;
+      return false;
+    }
+    if (!outputs.stage(files.pdf, bytes, error)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::filesystem::path raw_image_path(const std::filesystem::path& image) {
@@ -32,7 +62,7 @@ std::filesystem::path raw_image_path(const std::filesystem::path& image) {
 OutputsWritten write_film_outputs(const Film& film, const ResolveSettings& settings,
                                   const std::filesystem::path& image, const std::vector<AovFile>& aovs,
                                   std::string* error, ThreadBudget* pool, const Cancel& cancel,
-                                  const PixelWindow& crop, const RgbImage* denoised) {
+                                  const PixelWindow& crop, const RgbImage* denoised, const LineFiles& lines) {
   constexpr OutputsWritten kFailed = OutputsWritten::failed;
   OutputSet outputs;
   std::string bytes;
@@ -52,6 +82,7 @@ OutputsWritten write_film_outputs(const Film& film, const ResolveSettings& setti
     final_image = resolve_final(film, *denoised, settings, kFileDisplay, pool, cancel);
     if (final_image.pixels.empty()) return cancelled();
   }
+  if (lines.any() && !stage_line_files(film, settings, final_image, lines, outputs, error)) return kFailed;
   if (!encode_image(image, crop_image(std::move(final_image), crop), &bytes, error) ||
       !outputs.stage(image, bytes, error))
     return kFailed;
@@ -65,9 +96,10 @@ OutputsWritten write_film_outputs(const Film& film, const ResolveSettings& setti
 
 OutputsWritten write_render_outputs(RenderSession& session, const std::filesystem::path& image,
                                     const std::vector<AovFile>& aovs, std::string* error,
-                                    const Cancel& cancel, const PixelWindow& crop, const RgbImage* denoised) {
+                                    const Cancel& cancel, const PixelWindow& crop, const RgbImage* denoised,
+                                    const LineFiles& lines) {
   return write_film_outputs(session.film(), session.scene().resolve, image, aovs, error, &session.pool(),
-                            cancel, crop, denoised);
+                            cancel, crop, denoised, lines);
 }
 
 bool write_partial_file(const Film& film, const PartialInfo& info, const std::filesystem::path& file,

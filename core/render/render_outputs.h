@@ -22,6 +22,14 @@ struct AovFile {
 
 enum class OutputsWritten { all, failed, cancelled };
 
+// The lines as vector files (core/npr/lines/vector_lines.h), staged with the image:
+// the line sets' strokes, or without sets each outline type's lines in its colour.
+struct LineFiles {
+  std::filesystem::path svg, pdf;  // empty: not written
+  bool svg_image = false;          // the image under the lines in the SVG
+  bool any() const { return !svg.empty() || !pdf.empty(); }
+};
+
 // The display a written image is meant for: PNG files are encoded with it
 // (encode_srgb8), and lines are composited for it in every format
 // (core/film/resolve.h), so an EXR or PFM shown this way matches the PNG.
@@ -40,13 +48,14 @@ std::filesystem::path raw_image_path(const std::filesystem::path& image);
 OutputsWritten write_render_outputs(RenderSession& session, const std::filesystem::path& image,
                                     const std::vector<AovFile>& aovs, std::string* error,
                                     const Cancel& cancel = {}, const PixelWindow& crop = {},
-                                    const RgbImage* denoised = nullptr);
+                                    const RgbImage* denoised = nullptr, const LineFiles& lines = {});
 // The same for a film without its session (inkray-merge), resolved with these
 // compiled settings exactly as a session's film would be.
 OutputsWritten write_film_outputs(const Film& film, const ResolveSettings& settings,
                                   const std::filesystem::path& image, const std::vector<AovFile>& aovs,
                                   std::string* error, ThreadBudget* pool = nullptr, const Cancel& cancel = {},
-                                  const PixelWindow& crop = {}, const RgbImage* denoised = nullptr);
+                                  const PixelWindow& crop = {}, const RgbImage* denoised = nullptr,
+                                  const LineFiles& lines = {});
 // A partial file (film_partial.h) of info.window of `film`, replaced atomically.
 bool write_partial_file(const Film& film, const PartialInfo& info, const std::filesystem::path& file,
                         std::string* error);

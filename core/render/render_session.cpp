@@ -1,5 +1,7 @@
 #include "core/render/render_session.h"
 
+#include "core/film/film_chains.h"
+
 #include "core/integrator/path_tracer.h"
 
 #include <algorithm>
@@ -60,6 +62,8 @@ void RenderSession::set_scene(std::shared_ptr<const RenderScene> scene, AovSet a
   const int width = std::max((scene_->sampling.width + divisor_ - 1) / divisor_, 1);
   const int height = std::max((scene_->sampling.height + divisor_ - 1) / divisor_, 1);
   lines_ = line_setup_for_film(scene_->lines, divisor_);
+  // Line sets draw chains labelled with the surfaces under them (film_chains.h).
+  if (lines_.active && !scene_->resolve.sets.empty()) aovs.bits |= chain_aovs().bits;
   film_ = film_for(width, height, aovs, lines_.active);
   stats_ = {};
   first_pass_ = 0;

@@ -49,7 +49,7 @@ const RgbImage* ViewportResolver::resolve(const Film& film, const RenderScene& s
     base_ = resolve_base(std::move(radiance), scene.resolve, film.height(), &pool, cancel);
     if (base_.pixels.empty()) return nullptr;
     base_denoised_ = denoise;
-    lines_ = gather_lines(film);
+    lines_ = gather_lines(film, scene.resolve);
     base_settings_ = scene.resolve;
     stale_ = Stale::lines;
   }
@@ -59,6 +59,8 @@ const RgbImage* ViewportResolver::resolve(const Film& film, const RenderScene& s
   }
   if (!(resolved_for_ == display)) invalidate(ResolveChange::display);
   if (stale_ == Stale::lines) {
+    // The first line set, or new material paths, chain the same samples' lines anew.
+    if (!lines_.serve(scene.resolve)) lines_ = gather_lines(film, scene.resolve);
     resolved_ = base_;  // reuses its pixels' storage
     composite_lines(lines_, scene.resolve, display, resolved_);
     resolved_for_ = display;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <string_view>
 
 namespace inkray {
@@ -14,6 +15,12 @@ enum class LineType { depth, crease, intersection, material, object, silhouette 
 inline constexpr int kLineTypeCount = 6;
 inline constexpr std::array<std::string_view, kLineTypeCount> kLineTypeNames = {
     "depth", "crease", "intersection", "material", "object", "silhouette"};
+
+// How a line reached the camera: seen directly, in a mirror, or through glass.
+enum class LinePath : uint8_t { direct, reflected, refracted };
+inline constexpr int kLinePathCount = 3;
+inline constexpr std::array<std::string_view, kLinePathCount> kLinePathNames = {"direct", "reflected",
+                                                                                "refracted"};
 
 // Coverage is the fraction of stencil rays that see a break; a pixel's line
 // opacity is kLineGain times its mean, clamped to 1. With stencil points

@@ -6,10 +6,14 @@
 
 #include "core/document/filter_kinds.h"
 #include "core/math/types.h"
+#include "core/world/chain.h"
+#include "core/world/line_sets.h"
 #include "core/world/line_types.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 namespace inkray {
 
@@ -38,6 +42,17 @@ struct ResolveSettings {
   float painterly_radius = 4.f;  // pixels at the reference height 1080
   float painterly_sharpness = 8.f;
   std::array<LineLook, kLineTypeCount> lines{};  // by LineType
+  // Line sets: with any, lines are chained and drawn as their strokes instead of
+  // pixel by pixel in the colours above (docs/architecture.md, "Lines as strokes").
+  std::vector<LineSet> sets;
+  std::vector<uint8_t> material_paths;  // LinePath of a line seen on each material, by index
+  // Without sets, what vector files draw the lines with: a set per enabled line
+  // type, of its colour, opacity and width.
+  std::vector<LineSet> plain_sets;
+  // Hidden lines, when a set takes them: chains in pixels of the full image
+  // (SampleSettings' width), made by the compiler for this view; null when none is taken.
+  std::shared_ptr<const std::vector<Chain>> hidden;
+  int hidden_width = 0;  // the full image's width the hidden chains are drawn in
   bool operator==(const ResolveSettings&) const = default;
 };
 

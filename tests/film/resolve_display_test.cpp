@@ -170,7 +170,7 @@ TEST(ResolveDisplay, CompositeOverTheBaseIsTheFinalImage) {
   const RgbImage base = resolve_base(film, settings);
   for (const DisplayEncoding& d : {DisplayEncoding{}, DisplayEncoding{1.f, ViewTransform::filmic}}) {
     RgbImage a = base;
-    composite_lines(gather_lines(film), settings, d, a);
+    composite_lines(gather_lines(film, settings), settings, d, a);
     const RgbImage b = resolve_final(film, settings, d);
     EXPECT_EQ(a.pixels, b.pixels);
   }

@@ -84,6 +84,8 @@ ExportRequest make_export_request(const ExportForm& form, const ExportFormCheck&
   r.time_seconds = form.time_seconds;
   r.noise_target = form.noise_target;
   r.denoise = form.denoise;
+  r.lines_svg = form.lines_svg;
+  r.lines_pdf = form.lines_pdf;
   for (size_t i = 0; i < form.aovs.size() && i < kAovNames.size(); ++i)
     if (form.aovs[i]) r.aovs.push_back(Aov(i));
   r.threads = export_threads(form.keep_viewport);

@@ -20,11 +20,12 @@ struct ExportForm {
   std::string output;  // a relative path is taken from the scene's folder
   std::vector<bool> aovs = std::vector<bool>(kAovNames.size(), false);
   int spp = 256;
-  float time_seconds = 0.f;    // 0: none
-  float noise_target = 0.f;    // relative error (0.01 is 1%); 0: none
-  bool denoise = false;        // the image denoised, the raw one beside it
-  int width = 0, height = 0;   // 0: the scene's
-  bool keep_viewport = false;  // the viewport keeps one thread instead of pausing
+  float time_seconds = 0.f;                   // 0: none
+  float noise_target = 0.f;                   // relative error (0.01 is 1%); 0: none
+  bool denoise = false;                       // the image denoised, the raw one beside it
+  bool lines_svg = false, lines_pdf = false;  // the lines as vectors beside it, <stem>.svg / .pdf
+  int width = 0, height = 0;                  // 0: the scene's
+  bool keep_viewport = false;                 // the viewport keeps one thread instead of pausing
 };
 
 struct ExportFormCheck {

@@ -202,6 +202,14 @@ void ExportUi::limits_rows() {
   ImGui::SameLine();
   ImGui::TextDisabled(form_.denoise ? "lines and bands stay crisp; also writes <name>_raw"
                                     : "off: the image as rendered");
+  row("Lines as vectors");
+  ImGui::Checkbox("SVG##lines_svg", &form_.lines_svg);
+  widget_report::item("export.lines_svg");
+  ImGui::SameLine();
+  ImGui::Checkbox("PDF##lines_pdf", &form_.lines_pdf);
+  widget_report::item("export.lines_pdf");
+  ImGui::SameLine();
+  ImGui::TextDisabled("<name>.svg / .pdf: a layer per line set, mirrors and glass included");
 }
 
 void ExportUi::resolution_row() {

@@ -303,7 +303,29 @@ void ParamWidgets::pop_item() {
   path_lengths_.pop_back();
   ImGui::PopID();
 }
-bool ParamWidgets::remove_button() { return ImGui::SmallButton("remove"); }
+ParamWidgets::ItemAction ParamWidgets::item_buttons(bool can_go_up, bool can_go_down) {
+  ItemAction action = ItemAction::none;
+  if (ImGui::SmallButton("remove")) action = ItemAction::remove;
+  if (can_go_up) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("up")) action = ItemAction::up;
+  }
+  if (can_go_down) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("down")) action = ItemAction::down;
+  }
+  return action;
+}
+
+bool ParamWidgets::preset_combo(std::span<const std::string_view> names, int* chosen) {
+  bool picked = false;
+  if (ImGui::BeginCombo("Preset", "choose...")) {
+    for (int i = 0; i < int(names.size()); ++i)
+      if (ImGui::Selectable(derived_label(names[size_t(i)]).c_str(), false)) *chosen = i, picked = true;
+    ImGui::EndCombo();
+  }
+  return picked;
+}
 bool ParamWidgets::add_button() { return ImGui::SmallButton("+ add"); }
 
 bool variant_type_combo_impl(const char* label, const std::vector<std::string_view>& names, int* index) {

@@ -9,6 +9,7 @@
 #include "core/document/desc.h"
 #include "ui/model/selection.h"
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -72,15 +73,20 @@ struct ParamWidgets {
   }
   // A graph's nodes are drawn by the node editor (node_editor_panel.h), not as a list.
   void operator()(const Param&, std::vector<GraphNodeDesc>&) {}
-  // A list of structs (ramp stops, links): each entry's widgets, a remove button, an add button.
+  // A list of structs (ramp stops, links, line sets): each entry's widgets, buttons to
+  // remove it and to move it up or down (where order matters, as line sets' drawing
+  // order), an add button.
   template <ParamGroup T>
   void operator()(const Param& p, std::vector<T>& items) {
     if (!begin_group(p)) return;
     for (size_t i = 0; i < items.size(); ++i) {
       push_item(p, int(i));
       visit_params(items[i], *this);
-      if (remove_button()) {
-        items.erase(items.begin() + long(i));
+      const ItemAction action = item_buttons(i > 0, i + 1 < items.size());
+      if (action != ItemAction::none) {
+        if (action == ItemAction::remove) items.erase(items.begin() + long(i));
+        if (action == ItemAction::up) std::swap(items[i], items[i - 1]);
+        if (action == ItemAction::down) std::swap(items[i], items[i + 1]);
         note(p);
         pop_item();
         break;
@@ -96,6 +102,13 @@ struct ParamWidgets {
   template <ParamGroup T>
   void operator()(const Param& p, T& group) {
     if (begin_group(p)) {
+      if constexpr (HasPresets<T>) {
+        int chosen = -1;
+        if (preset_combo(ParamPresets<T>::names, &chosen)) {
+          ParamPresets<T>::apply(ParamPresets<T>::names[size_t(chosen)], group);
+          note(p);
+        }
+      }
       visit_params(group, *this);
       end_group();
     }
@@ -114,8 +127,11 @@ struct ParamWidgets {
   void end_group();
   void push_item(const Param& p, int index);
   void pop_item();
-  bool remove_button();
+  enum class ItemAction { none, remove, up, down };
+  ItemAction item_buttons(bool can_go_up, bool can_go_down);
   bool add_button();
+  // A "Preset" combo over `names`; true with *chosen set when one was picked.
+  bool preset_combo(std::span<const std::string_view> names, int* chosen);
   // The tooltip and, when it names this parameter, the problem in red.
   void finish(const Param& p, bool typed_value);
   void note(const Param& p) {

@@ -27,7 +27,9 @@ int reach_from(const Chain& chain, int i, int step) {
 // Points first to last, wrapping round a closed chain; all the way round back to
 // `first` when they are the same.
 Chain piece_of(const Chain& chain, int first, int last) {
-  Chain piece{chain.type, chain.path, chain.object, chain.material, false, {}};
+  Chain piece = chain;  // every label, covers included
+  piece.closed = false;
+  piece.points.clear();
   const int n = int(chain.points.size());
   const int count = last == first ? n + 1 : (last - first + n) % n + 1;
   for (int k = 0; k < count; ++k) piece.points.push_back(chain.points[size_t((first + k) % n)]);

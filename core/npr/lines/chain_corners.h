@@ -2,7 +2,7 @@
 // drawn as its own stroke (so a tapered style tapers into every sharp corner).
 #pragma once
 
-#include "core/npr/lines/chain.h"
+#include "core/world/chain.h"
 
 #include <vector>
 

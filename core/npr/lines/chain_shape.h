@@ -3,7 +3,7 @@
 // film's coverage, or from the surfaces' own edges).
 #pragma once
 
-#include "core/npr/lines/chain.h"
+#include "core/world/chain.h"
 
 namespace inkray {
 

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "core/base/cancel.h"
-#include "core/npr/lines/chain.h"
+#include "core/world/chain.h"
 #include "core/world/render_scene.h"
 
 #include <vector>

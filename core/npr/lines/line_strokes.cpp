@@ -184,8 +184,10 @@ bool selects(const LineSelection& select, const Chain& chain) {
   auto in = [](const std::vector<bool>& chosen, int index) {
     return chosen.empty() || (index >= 0 && size_t(index) < chosen.size() && chosen[size_t(index)]);
   };
+  const bool seen = chain.covers == 0;
   return bit(select.types, int(chain.type)) && bit(select.paths, int(chain.path)) &&
-         in(select.objects, chain.object) && in(select.materials, chain.material);
+         (seen ? select.visible : select.hidden) && in(select.objects, chain.object) &&
+         in(select.materials, chain.material);
 }
 
 std::vector<LineStroke> stroke_chains(const std::vector<Chain>& chains, const std::vector<LineSet>& sets,

@@ -7,7 +7,7 @@
 
 #include "core/geometry/alpha_mask.h"
 #include "core/math/types.h"
-#include "core/npr/lines/chain.h"
+#include "core/world/chain.h"
 #include "core/world/line_sets.h"
 
 #include <memory>

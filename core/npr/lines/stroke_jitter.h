@@ -2,7 +2,7 @@
 // that the same line jitters the same way from frame to frame.
 #pragma once
 
-#include "core/npr/lines/chain.h"
+#include "core/world/chain.h"
 
 #include <cstdint>
 #include <vector>

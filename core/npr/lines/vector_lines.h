@@ -26,9 +26,19 @@ bool write_lines_svg(const std::filesystem::path& file, int width, int height,
                      const std::vector<LineStroke>& strokes, const std::vector<LineSet>& sets,
                      const RgbImage* background, std::string* error);
 
+// The same SVG in memory, for a caller that stages it with other files
+// (core/render/render_outputs.h); errors do not name a file.
+bool encode_lines_svg(int width, int height, const std::vector<LineStroke>& strokes,
+                      const std::vector<LineSet>& sets, const RgbImage* background, std::string* bytes,
+                      std::string* error);
+
 // The same drawing as one PDF page of width x height points (a point per pixel),
 // through cairo, the background image under the lines.
 bool write_lines_pdf(const std::filesystem::path& file, int width, int height,
                      const std::vector<LineStroke>& strokes, const RgbImage* background, std::string* error);
+
+// The same PDF in memory.
+bool encode_lines_pdf(int width, int height, const std::vector<LineStroke>& strokes,
+                      const RgbImage* background, std::string* bytes, std::string* error);
 
 }  // namespace inkray

@@ -62,10 +62,10 @@ void fill_shape(cairo_t* cr, const OutlineShape& shape) {
 
 }  // namespace
 
-bool write_lines_pdf(const std::filesystem::path& file, int width, int height,
-                     const std::vector<LineStroke>& strokes, const RgbImage* background, std::string* error) {
+bool encode_lines_pdf(int width, int height, const std::vector<LineStroke>& strokes,
+                      const RgbImage* background, std::string* bytes, std::string* error) {
   if (width <= 0 || height <= 0) {
-    *error = file.string() + ": cannot write lines of an empty image";
+    *error = "cannot write lines of an empty image";
     return false;
   }
   std::string pdf;
@@ -84,7 +84,18 @@ bool write_lines_pdf(const std::filesystem::path& file, int width, int height,
   cairo_surface_destroy(surface);
   const cairo_status_t status = drawn != CAIRO_STATUS_SUCCESS ? drawn : finished;
   if (status != CAIRO_STATUS_SUCCESS) {
-    *error = file.string() + ": PDF drawing failed: " + cairo_status_to_string(status);
+    *error = std::string("PDF drawing failed: ") + cairo_status_to_string(status);
+    return false;
+  }
+  *bytes = std::move(pdf);
+  return true;
+}
+
+bool write_lines_pdf(const std::filesystem::path& file, int width, int height,
+                     const std::vector<LineStroke>& strokes, const RgbImage* background, std::string* error) {
+  std::string pdf;
+  if (!encode_lines_pdf(width, height, strokes, background, &pdf, error)) {
+    *error = file.string() + ": " + *error;
     return false;
   }
   return write_file_atomically(file, pdf, error);

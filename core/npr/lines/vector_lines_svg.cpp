@@ -96,11 +96,11 @@ void append_shape(std::string& out, const OutlineShape& shape) {
 
 }  // namespace
 
-bool write_lines_svg(const std::filesystem::path& file, int width, int height,
-                     const std::vector<LineStroke>& strokes, const std::vector<LineSet>& sets,
-                     const RgbImage* background, std::string* error) {
+bool encode_lines_svg(int width, int height, const std::vector<LineStroke>& strokes,
+                      const std::vector<LineSet>& sets, const RgbImage* background, std::string* bytes,
+                      std::string* error) {
   if (width <= 0 || height <= 0) {
-    *error = file.string() + ": cannot write lines of an empty image";
+    *error = "cannot write lines of an empty image";
     return false;
   }
   const std::string w = std::to_string(width), h = std::to_string(height);
@@ -112,8 +112,8 @@ bool write_lines_svg(const std::filesystem::path& file, int width, int height,
       w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
   if (background && background->width > 0 && background->height > 0) {
     std::string png, reason;
-    if (!encode_image(std::filesystem::path(file).replace_extension(".png"), *background, &png, &reason)) {
-      *error = file.string() + ": cannot encode the background image";
+    if (!encode_image("background.png", *background, &png, &reason)) {
+      *error = "cannot encode the background image: " + reason;
       return false;
     }
     svg += "<g id=\"background\" inkscape:groupmode=\"layer\" inkscape:label=\"background\">\n";
@@ -135,6 +135,18 @@ bool write_lines_svg(const std::filesystem::path& file, int width, int height,
     svg += "</g>\n";
   }
   svg += "</svg>\n";
+  *bytes = std::move(svg);
+  return true;
+}
+
+bool write_lines_svg(const std::filesystem::path& file, int width, int height,
+                     const std::vector<LineStroke>& strokes, const std::vector<LineSet>& sets,
+                     const RgbImage* background, std::string* error) {
+  std::string svg;
+  if (!encode_lines_svg(width, height, strokes, sets, background, &svg, error)) {
+    *error = file.string() + ": " + *error;
+    return false;
+  }
   return write_file_atomically(file, svg, error);
 }
 

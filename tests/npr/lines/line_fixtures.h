@@ -2,7 +2,7 @@
 #pragma once
 
 #include "core/image/rgb_image.h"
-#include "core/npr/lines/chain.h"
+#include "core/world/chain.h"
 #include "core/world/line_sets.h"
 
 #include <cmath>

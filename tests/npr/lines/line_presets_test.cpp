@@ -1,7 +1,8 @@
 // The named line styles: each is what its name promises. Set INKRAY_WRITE_LINE_DEMO to
 // also write /tmp/inkray_line_presets.png (and .svg, .pdf, and zoomed crops), every
 // preset drawing a circle, an S-curve and a corner, to look at.
-#include "core/npr/lines/line_presets.h"
+#include "core/document/line_set_desc.h"
+#include "core/world/line_sets.h"
 
 #include "core/image/image_io.h"
 #include "core/npr/lines/line_strokes.h"
@@ -15,6 +16,15 @@
 #include <cstdlib>
 
 namespace inkray {
+
+// A preset as the compiler passes it on: the document's style block, no brush loaded.
+static LineStyle line_preset(std::string_view name) {
+  LineSetStyleDesc desc;
+  ParamPresets<LineSetStyleDesc>::apply(name, desc);
+  LineStyle style;
+  static_cast<LineStyleParams&>(style) = desc;
+  return style;
+}
 namespace {
 
 using namespace test;

@@ -1,8 +1,9 @@
 // Chains: the lines of a render as strokes (docs/architecture.md, "Lines as
-// strokes"). The film's line coverage, resolved per line type, is thinned to
-// one-pixel paths and traced into ordered polylines in image space, each point
-// carrying what the surface under it was: that is what line sets select and
-// styles draw along.
+// strokes"), the form lines take between finding them and drawing them. Traced
+// from the film's coverage (core/npr/lines/chain_builder.h) or found on the
+// surfaces' edges (hidden lines, core/npr/lines/hidden_lines.h), they are ordered
+// polylines in image space, each point carrying what the surface under it was:
+// what line sets select and styles draw along.
 #pragma once
 
 #include "core/math/types.h"
@@ -14,12 +15,6 @@
 #include <vector>
 
 namespace inkray {
-
-// How a line reached the camera: seen directly, in a mirror, or through glass.
-enum class LinePath : uint8_t { direct, reflected, refracted };
-inline constexpr int kLinePathCount = 3;
-inline constexpr std::array<std::string_view, kLinePathCount> kLinePathNames = {"direct", "reflected",
-                                                                                "refracted"};
 
 struct ChainPoint {
   Vec2 p{0.f};            // image position, pixels of the image the chain was built on (y down)
