@@ -114,7 +114,8 @@ run_farm "${frames_args[@]}"
 frame_jobs="$(submitted)"
 # 80 samples: the slices after the first start at 20, 40 and 60, after the line decisions
 # are all made (sample 17 here), so they read them from the decisions job's file.
-still_args=("$still" -o "$work/still/cornell.pfm" --slices 4 --spp 80 --width 96 --height 96)
+still_args=("$still" -o "$work/still/cornell.pfm" --slices 4 --spp 80 --width 96 --height 96
+  --lines-svg "$work/still/cornell.svg")
 run_farm "${still_args[@]}"
 still_jobs="$(submitted)"
 tiles_args=("$still" -o "$work/tiles/cornell.pfm" --aov "depth=$work/tiles/depth.pfm" --tiles 2x2 --spp 16
@@ -126,7 +127,8 @@ tiles_jobs="$(submitted)"
 step "rendering the references on one machine"
 mkdir -p "$work/ref"
 "${render[@]}" "$scene" --frames 1-12 -o "$work/ref/anim_####.png" --width 64 --height 48 --spp 4 -q
-"${render[@]}" "$still" -o "$work/ref/cornell.pfm" --spp 80 --width 96 --height 96 -q
+"${render[@]}" "$still" -o "$work/ref/cornell.pfm" --spp 80 --width 96 --height 96 -q \
+  --lines-svg "$work/ref/cornell.svg"
 "${render[@]}" "$still" -o "$work/ref/tiles.pfm" --aov "depth=$work/ref/depth.pfm" --spp 16 --width 96 \
   --height 96 -q
 
@@ -149,6 +151,8 @@ for pair in still/cornell.pfm:ref/cornell.pfm tiles/cornell.pfm:ref/tiles.pfm ti
   "$python" "$repo/tests/farm/compare_pfm.py" "$work/${pair%%:*}" "$work/${pair#*:}" 0 0 || differing+=("${pair%%:*}")
 done
 ((${#differing[@]} == 0)) || fail "merged images differ from the one-machine renders: ${differing[*]}"
+# The merged film is the one-machine film, so its lines as vectors are too.
+cmp "$work/still/cornell.svg" "$work/ref/cornell.svg" || fail "the merged render's SVG differs from the one-machine one"
 
 # ---------------------------------------------------------------- re-runs
 step "re-running"
