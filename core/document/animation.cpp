@@ -129,6 +129,14 @@ void leaf(Access& a, const Param& p, T& field, std::string_view name) {
 template <class T>
 void descend(Access& a, const Param& p, T& field, Path rest);
 
+// A list of structs with names and parameter tables (outline line sets).
+template <class T>
+concept NamedList = requires(T& list) {
+  list.begin();
+  list[0].name;
+}
+&&ParamGroup<std::decay_t<decltype(std::declval<T&>()[0])>>;
+
 // Matches the first part of a path against a struct's parameter list.
 struct PathVisitor {
   Access* a;
@@ -169,6 +177,11 @@ void descend(Access& a, const Param& p, T& field, Path rest) {
           }
         },
         field);
+  } else if constexpr (NamedList<T>) {
+    // A list of named entries (outline line sets): an entry by its name, as objects are.
+    for (auto& item : field)
+      if (item.name == rest[0]) return descend_struct(a, item, rest.subspan(1), item.name);
+    a.error = "no entry named " + in_quotes(rest[0]) + " in " + in_quotes(p.name);
   } else {
     a.error = in_quotes(p.name) + " has no parameter " + in_quotes(rest[0]);
   }
