@@ -6,11 +6,15 @@
 // is noise: frame f+1 rendered with two seeds and compared through the same bilinear
 // resampling the warp uses (at the warp's sub-pixel offsets), so a ratio near 1 means
 // the layer changes between frames no more than sampling noise does.
-// Layers: lines (the outline AOV's opacity), strokes (luminance on painted
-// objects' pixels), surfaces (luminance on every other object's pixels).
+// Layers: lines (the outline AOV's opacity; with line sets, the alpha of the styled
+// strokes drawn from the film's chains), strokes (luminance on painted objects'
+// pixels), surfaces (luminance on every other object's pixels).
 #include "core/compiler/compile.h"
 #include "core/document/animation.h"
 #include "core/document/json_io.h"
+#include "core/film/film_chains.h"
+#include "core/film/resolve.h"
+#include "core/npr/lines/stroke_raster.h"
 #include "core/render/batch_render.h"
 
 #include <algorithm>
@@ -43,6 +47,19 @@ struct FrameImages {
 
 float luminance(const Color& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
+// The line sets' strokes as an alpha layer: drawn in white over black with no display
+// curve, so a pixel holds the strokes' coverage there.
+RgbImage stroke_alpha(const Film& film, const ResolveSettings& resolve) {
+  RgbImage alpha{film.width(), film.height(),
+                 std::vector<Color>(size_t(film.width()) * size_t(film.height()))};
+  std::vector<LineSet> sets = resolve.sets;
+  for (LineSet& set : sets) set.style.color = set.style.color_end = Color(1.f);
+  const std::vector<Chain> chains =
+      chains_to_draw(film_chains(film, resolve.material_paths), resolve, film.width());
+  draw_strokes(stroke_chains(chains, sets, film.height()), DisplayEncoding{0.f, ViewTransform::raw}, alpha);
+  return alpha;
+}
+
 FrameImages render_frame(SceneCompiler& compiler, SceneDesc desc, double frame, int seed, const Options& o) {
   desc.render.frame = float(frame);
   desc.render.seed = seed;
@@ -67,6 +84,8 @@ FrameImages render_frame(SceneCompiler& compiler, SceneDesc desc, double frame, 
   f.ids = session.film().resolve_aov(Aov::object_id);
   f.depth = session.film().resolve_aov(Aov::depth);
   if (aovs.has(Aov::outline)) f.lines = session.film().resolve_aov(Aov::outline);
+  if (c.scene->lines.active && !c.scene->resolve.sets.empty())
+    f.lines = stroke_alpha(session.film(), c.scene->resolve);
   f.camera = c.scene->camera;
   return f;
 }

@@ -132,6 +132,31 @@ void grow_into_faint(const ChainSource& s, const std::vector<float>& type_opacit
   }
 }
 
+// The skeleton lies on pixel centres, so as a line slides by less than a pixel its
+// chain would stay, then jump. Each point moves across the line to the coverage's
+// centroid there (sub-pixel, and continuous as the line moves), which is the line's
+// middle for a line of any width.
+void centre_on_ridge(const ChainSource& s, const std::vector<float>& type_opacity, Chain& c) {
+  const size_t n = c.points.size();
+  if (n < 3) return;
+  std::vector<Vec2> moved(n);
+  for (size_t i = 0; i < n; ++i) {
+    const bool end = i == 0 || i + 1 == n;
+    const Vec2 a = c.points[end && !c.closed ? (i == 0 ? 0 : i - 1) : (i + n - 1) % n].p;
+    const Vec2 b = c.points[end && !c.closed ? (i == 0 ? 1 : i) : (i + 1) % n].p;
+    moved[i] = c.points[i].p;
+    if (glm::length(b - a) <= 0.f) continue;
+    const Vec2 along = glm::normalize(b - a), across(-along.y, along.x);
+    float sum = 0.f, moment = 0.f;
+    for (float o = -2.f; o <= 2.f; o += 0.25f) {
+      const float w = std::max(0.f, opacity_at(s, type_opacity, c.points[i].p + o * across) - 0.1f);
+      sum += w, moment += w * o;
+    }
+    if (sum > 0.f) moved[i] += std::clamp(moment / sum, -1.f, 1.f) * across;
+  }
+  for (size_t i = 0; i < n; ++i) c.points[i].p = moved[i];
+}
+
 // The value most points carry (-1 wins only where nothing else is seen).
 int majority(const std::vector<int>& values) {
   std::unordered_map<int, int> counts;
@@ -171,6 +196,7 @@ std::vector<Chain> build_chains(const ChainSource& source, const ChainOptions& o
         if (!traced.closed && pixels.size() > 8) pixels = {pixels.begin() + 2, pixels.end() - 2};
         c.points = fit_chain(pixels, traced.closed, options.fit_tolerance, options.spacing);
         if (c.points.size() < 2) continue;
+        centre_on_ridge(source, type_opacity, c);
         extend_ends(source, type_opacity, c);
         std::vector<int> objects, materials, paths;
         for (ChainPoint& q : c.points) {
