@@ -45,17 +45,6 @@ TriangleMeshData million_triangles() {
   return TriangleMeshData{std::move(p), {}, {}, std::move(idx)};
 }
 
-template <class F>
-double median_ms(int runs, F&& f) {
-  std::vector<double> t;
-  for (int r = 0; r < runs; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  return bench::median(t);
-}
-
 }  // namespace
 }  // namespace inkray
 
@@ -68,10 +57,10 @@ int main(int argc, char** argv) {
   std::printf("noisy torus, %zu triangles, median of %d runs (one thread)\n", mesh.indices.size() / 3, runs);
   MeshFeatures features;
   std::printf("feature edges            %8.1f ms\n",
-              median_ms(runs, [&] { features = find_feature_edges(mesh.positions, mesh.indices); }));
+              bench::median_ms(runs, [&] { features = find_feature_edges(mesh.positions, mesh.indices); }));
   for (const float threshold : {30.f, 60.f}) {
     size_t patches = 0;
-    const double ms = median_ms(runs, [&] {
+    const double ms = bench::median_ms(runs, [&] {
       const std::vector<uint32_t> ids = smooth_patches(features, threshold);
       patches = ids.empty() ? 0 : size_t(*std::max_element(ids.begin(), ids.end())) + 1;
     });
@@ -79,7 +68,7 @@ int main(int argc, char** argv) {
   }
   size_t vertices = 0;
   std::printf("auto smooth at 30 degrees %7.1f ms",
-              median_ms(runs, [&] { vertices = auto_smooth(mesh, 30.f).positions.size(); }));
+              bench::median_ms(runs, [&] { vertices = auto_smooth(mesh, 30.f).positions.size(); }));
   std::printf(" (%zu vertices)\n", vertices);
   return 0;
 }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <unordered_map>
 
 namespace inkray {
@@ -60,6 +61,20 @@ float opacity_at(const ChainSource& s, const std::vector<float>& type_opacity, V
          ty * ((1.f - tx) * at(x0, y0 + 1) + tx * at(x0 + 1, y0 + 1));
 }
 
+// How far along `across` from p the line's middle lies: the centroid of the coverage
+// within two pixels either side (what lies above a faint floor, so the background's
+// faint specks do not pull it); none where nothing is covered.
+std::optional<float> offset_across(const ChainSource& s, const std::vector<float>& type_opacity, Vec2 p,
+                                   Vec2 across) {
+  float sum = 0.f, moment = 0.f;
+  for (float o = -2.f; o <= 2.f; o += 0.25f) {
+    const float w = std::max(0.f, opacity_at(s, type_opacity, p + o * across) - 0.1f);
+    sum += w, moment += w * o;
+  }
+  if (sum <= 0.f) return std::nullopt;
+  return moment / sum;
+}
+
 // Thinning eats into a line's ends, and may hook its last pixels aside: an open
 // chain stops short of where its line does. Each end follows the line on, along
 // its ridge (re-centred across at every step), to the line's half-opacity edge,
@@ -88,13 +103,9 @@ void extend_ends(const ChainSource& s, const std::vector<float>& type_opacity, C
     const int steps = int(std::ceil((3.f * half_width + 2.f) / 0.5f));
     for (int step = 0; step < steps; ++step) {
       const Vec2 ahead = pos + 0.5f * dir, across(-dir.y, dir.x);
-      float sum = 0.f, moment = 0.f;
-      for (float o = -2.f; o <= 2.f; o += 0.5f) {
-        const float w = std::max(0.f, opacity(ahead + o * across) - 0.2f);
-        sum += w, moment += w * o;
-      }
-      if (sum <= 0.f) break;
-      const Vec2 centred = ahead + (moment / sum) * across;
+      const std::optional<float> offset = offset_across(s, type_opacity, ahead, across);
+      if (!offset) break;
+      const Vec2 centred = ahead + *offset * across;
       if (opacity(centred) < kHalf) break;
       const Vec2 turned = glm::normalize(dir + glm::normalize(centred - pos));
       if (glm::dot(turned, along) < std::cos(float(M_PI) / 6.f)) break;
@@ -147,12 +158,8 @@ void centre_on_ridge(const ChainSource& s, const std::vector<float>& type_opacit
     moved[i] = c.points[i].p;
     if (glm::length(b - a) <= 0.f) continue;
     const Vec2 along = glm::normalize(b - a), across(-along.y, along.x);
-    float sum = 0.f, moment = 0.f;
-    for (float o = -2.f; o <= 2.f; o += 0.25f) {
-      const float w = std::max(0.f, opacity_at(s, type_opacity, c.points[i].p + o * across) - 0.1f);
-      sum += w, moment += w * o;
-    }
-    if (sum > 0.f) moved[i] += std::clamp(moment / sum, -1.f, 1.f) * across;
+    if (const auto offset = offset_across(s, type_opacity, c.points[i].p, across))
+      moved[i] += std::clamp(*offset, -1.f, 1.f) * across;
   }
   for (size_t i = 0; i < n; ++i) c.points[i].p = moved[i];
 }
