@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <regex>
@@ -74,9 +75,21 @@ Element parse_xml(const std::string& xml) {
     Element e;
     size_t k = 0;
     while (k < tag.size() && !std::isspace(static_cast<unsigned char>(tag[k]))) e.name += tag[k++];
-    static const std::regex attribute(R"re(\s*([A-Za-z_:][-A-Za-z0-9_:.]*)="([^"]*)")re");
-    for (std::sregex_iterator it(tag.begin() + long(k), tag.end(), attribute), done; it != done; ++it)
-      e.attributes[(*it)[1]] = unescaped((*it)[2]);
+    // name="value" pairs, scanned by hand: libstdc++'s std::regex recurses once per
+    // character of a repeat, and a path's d of thousands overflows the stack (it did under
+    // AddressSanitizer, whose frames are larger).
+    while (k < tag.size()) {
+      while (k < tag.size() && std::isspace(static_cast<unsigned char>(tag[k]))) ++k;
+      if (k == tag.size()) break;
+      const size_t equals = tag.find("=\"", k);
+      const size_t close = equals == std::string::npos ? equals : tag.find('"', equals + 2);
+      EXPECT_NE(close, std::string::npos) << "malformed attribute in <" << tag << ">";
+      if (close == std::string::npos) break;
+      const std::string name = tag.substr(k, equals - k);
+      EXPECT_TRUE(std::regex_match(name, std::regex("[A-Za-z_:][-A-Za-z0-9_:.]*"))) << name;
+      e.attributes[name] = unescaped(tag.substr(equals + 2, close - equals - 2));
+      k = close + 1;
+    }
     open.back()->children.push_back(std::move(e));
     if (!self_closing) open.push_back(&open.back()->children.back());
   }
@@ -89,17 +102,20 @@ using Polygon = std::vector<Vec2>;
 // The rings of a path's d: M x y L x y ... Z, as write_lines_svg writes it.
 std::vector<Polygon> rings_of(const std::string& d) {
   std::vector<Polygon> rings;
-  static const std::regex token(R"(([MLZ])|(-?[0-9]+\.[0-9]+))");
   std::vector<float> numbers;
-  for (std::sregex_iterator it(d.begin(), d.end(), token), done; it != done; ++it) {
-    const std::string t = it->str();
-    if (t == "M") {
-      rings.emplace_back();
-    } else if (t == "L" || t == "Z") {
-    } else {
-      numbers.push_back(std::stof(t));
-      if (numbers.size() == 2) rings.back().push_back({numbers[0], numbers[1]}), numbers.clear();
+  // By hand, not std::regex: see parse_xml.
+  for (const char* c = d.c_str(); *c;) {
+    if (*c == 'M') rings.emplace_back();
+    if (*c == 'M' || *c == 'L' || *c == 'Z' || *c == ' ') {
+      ++c;
+      continue;
     }
+    char* end = nullptr;
+    numbers.push_back(std::strtof(c, &end));
+    EXPECT_NE(end, c) << "not a number at " << c;
+    if (end == c || rings.empty()) break;
+    c = end;
+    if (numbers.size() == 2) rings.back().push_back({numbers[0], numbers[1]}), numbers.clear();
   }
   return rings;
 }
