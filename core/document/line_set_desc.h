@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace inkray {
 
@@ -26,6 +27,20 @@ enum class LineModulation : uint8_t {
 inline constexpr std::array<std::string_view, 6> kLineModulationNames = {"none",      "along", "depth",
                                                                          "curvature", "light", "coverage"};
 
+// A point of a style's pressure curve: the width multiplier at a fraction of the
+// chain's length, as a pen pressed harder or lighter along the stroke.
+struct PressurePoint {
+  float at = 0.f;     // fraction of the chain's length from its start, [0, 1]
+  float width = 1.f;  // width multiplier there
+  bool operator==(const PressurePoint&) const = default;
+};
+template <>
+struct ParamTable<PressurePoint> {
+  static constexpr auto rows =
+      std::tuple{row(&PressurePoint::at, number("at", 0, 1, "Fraction of the line's length from its start")),
+                 row(&PressurePoint::width, number("width", 0, 100, "Width multiplier there").slider(0, 2))};
+};
+
 // A set's style, the same block in the document and in the compiled line set
 // (LineStyle, core/world/line_sets.h). Lengths are pixels of an image 1080 lines
 // tall, scaled with the image as the painterly filter's radius is, so a look holds
@@ -40,8 +55,11 @@ struct LineStyleParams {
   float width = 2.f;      // pixels at 1080 lines
   float width_min = 1.f;  // width multiplier where width_by reads 1
   LineModulation width_by = LineModulation::none;
-  float taper_start = 0.f;    // fraction of the chain's length over which it grows from nothing
-  float taper_end = 0.f;      // ... and shrinks to nothing at its end
+  float taper_start = 0.f;  // fraction of the chain's length over which it grows from nothing
+  float taper_end = 0.f;    // ... and shrinks to nothing at its end
+  // Width multiplier along the chain through these points (in any order), joined by
+  // straight segments and flat past the first and last; none: 1.
+  std::vector<PressurePoint> pressure{};
   float brush_repeat = 0.f;   // pixels of chain per brush image; 0: stretched over the whole chain
   float jitter = 0.f;         // amplitude of the noise that displaces the line across itself, pixels
   float jitter_scale = 20.f;  // wavelength of that noise along the chain, pixels
@@ -93,6 +111,10 @@ struct ParamTable<LineSetStyleDesc> {
           number("taper_start", 0, 1, "Fraction of the line's length over which it swells from nothing")),
       row(&LineSetStyleDesc::taper_end,
           number("taper_end", 0, 1, "Fraction of the line's length over which it thins to nothing")),
+      row(&LineSetStyleDesc::pressure,
+          list("pressure",
+               "Pressure curve: width multipliers along the line, points {\"at\": fraction of its length, "
+               "\"width\": multiplier} joined by straight segments; none: 1")),
       row(&LineSetStyleDesc::brush,
           choice("brush", kLineBrushNames,
                  "Texture along the line: none (solid), bristle, flat or an image")),

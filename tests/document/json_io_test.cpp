@@ -421,8 +421,8 @@ void collect_alternative_names(NameCollector& c) {
 TEST(SceneJsonDocs, EveryParameterIsDocumented) {
   NameCollector c;
   collect_names<CameraDesc, RenderSettings, ObjectDesc, RotationDesc, OutlineDesc, LineStyleDesc,
-                LineOverrideDesc, StrokeEmitterDesc, LineSetDesc, LineSetStyleDesc, LineTypeChoice,
-                LinePathChoice>(c);
+                LineOverrideDesc, StrokeEmitterDesc, LineSetDesc, LineSetStyleDesc, PressurePoint,
+                LineTypeChoice, LinePathChoice>(c);
   collect_alternative_names<EnvironmentDesc, MaterialVariant, ColorInput, ShapeVariant, LightVariant>(c);
   const std::string doc = format_doc();
   for (const std::string& name : c.names) {

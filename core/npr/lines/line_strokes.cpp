@@ -109,6 +109,20 @@ float taper(const LineStyle& style, float s, float length) {
   return f;
 }
 
+// The pressure curve's width multiplier at `along` (0 at the start, 1 at the end).
+float pressure(const std::vector<PressurePoint>& curve, float along) {
+  if (curve.empty()) return 1.f;
+  const PressurePoint* below = nullptr;
+  const PressurePoint* above = nullptr;
+  for (const PressurePoint& p : curve) {
+    if (p.at <= along && (!below || p.at >= below->at)) below = &p;
+    if (p.at >= along && (!above || p.at < above->at)) above = &p;
+  }
+  if (!below) return above->width;
+  if (!above || above->at <= below->at) return below->width;
+  return glm::mix(below->width, above->width, (along - below->at) / (above->at - below->at));
+}
+
 struct ValueContext {
   DepthRange depth;
   float full_curvature_per_px;  // at this image's scale
@@ -158,7 +172,8 @@ LineStroke styled_stroke(const Chain& piece, const LineStyle& style, float scale
     const float width_factor =
         glm::mix(1.f, style.width_min, modulation_value(style.width_by, q, along, values));
     const float tapered = piece.closed ? 1.f : taper(style, sample.v, length);
-    sample.half_width = std::max(0.f, 0.5f * style.width * scale * width_factor * tapered);
+    sample.half_width =
+        std::max(0.f, 0.5f * style.width * scale * width_factor * tapered * pressure(style.pressure, along));
     sample.color =
         style.color_by == LineModulation::none
             ? style.color

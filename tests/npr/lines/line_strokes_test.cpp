@@ -162,6 +162,29 @@ TEST(LineStrokes, TaperGrowsFromAndShrinksToNothing) {
   for (const StrokeSample& q : loop[0].samples) EXPECT_FLOAT_EQ(q.half_width, 2.f);
 }
 
+// The pressure curve, given out of order: flat before its first point and after its
+// last, straight between, on top of the width.
+TEST(LineStrokes, PressureCurveScalesTheWidthAlongTheLine) {
+  LineStyle style = plain_style(4.f);
+  style.pressure = {{0.8f, 0.5f}, {0.2f, 1.f}, {0.5f, 2.f}};
+  const std::vector<LineStroke> strokes = stroke_one(straight_chain(Vec2(0.f), Vec2(100.f, 0.f)), style);
+  ASSERT_EQ(strokes.size(), 1u);
+  const std::vector<StrokeSample>& s = strokes[0].samples;
+  ASSERT_EQ(s.size(), 101u);
+  EXPECT_FLOAT_EQ(s[0].half_width, 2.f);
+  EXPECT_FLOAT_EQ(s[20].half_width, 2.f);
+  EXPECT_NEAR(s[35].half_width, 3.f, 1e-4f);
+  EXPECT_FLOAT_EQ(s[50].half_width, 4.f);
+  EXPECT_NEAR(s[65].half_width, 2.5f, 1e-4f);
+  EXPECT_FLOAT_EQ(s[80].half_width, 1.f);
+  EXPECT_FLOAT_EQ(s[100].half_width, 1.f);
+  // One point: the whole line at its multiplier.
+  style.pressure = {{0.4f, 0.25f}};
+  const std::vector<LineStroke> flat = stroke_one(straight_chain(Vec2(0.f), Vec2(100.f, 0.f)), style);
+  ASSERT_EQ(flat.size(), 1u);
+  for (const StrokeSample& sample : flat[0].samples) EXPECT_FLOAT_EQ(sample.half_width, 0.5f);
+}
+
 TEST(LineStrokes, OvershootExtendsAlongTheEndTangents) {
   LineStyle style = plain_style();
   style.overshoot = 6.f;
