@@ -131,12 +131,14 @@ void material_section(ParamPanel& panel, int index) {
   commit(state, sel, std::move(*scene), edited.param, edited.typed);
 }
 
-// The object's own parameters but its outline overrides, which come last.
-struct WithoutGroups {
+// A struct's parameters but those `skip` picks, which the caller draws elsewhere.
+template <class Skip>
+struct Except {
   ParamWidgets& widgets;
+  Skip skip;
   template <class F>
   void operator()(const Param& p, F& field) {
-    if (p.kind != ParamKind::group) widgets(p, field);
+    if (!skip(p)) widgets(p, field);
   }
 };
 
@@ -146,7 +148,8 @@ void object_section(ParamPanel& panel, int index) {
   const Selection sel{ItemKind::object, index};
   ObjectDesc o = scene.objects[size_t(index)];
   ParamWidgets own = widgets_for(panel, sel);
-  WithoutGroups top{own};
+  // The outline overrides come last.
+  Except top{own, [](const Param& p) { return p.kind == ParamKind::group; }};
   visit_params(o, top);
   Edited edited{own.changed, own.changed_typed, own.changed_param};
   section_title("Transform");
@@ -207,6 +210,30 @@ void singleton_section(ParamPanel& panel, ItemKind kind, T SceneDesc::*member) {
   }
 }
 
+// Line sets have a tab of their own, with their styles' swatches and their keys.
+void line_sets_link(EditorState& state, size_t count) {
+  ImGui::Spacing();
+  ImGui::TextDisabled("%zu line set%s", count, count == 1 ? "" : "s");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Edit in the Line sets tab")) state.want_line_sets = true;
+}
+
+// The outlines' settings but their line sets.
+void outlines_section(ParamPanel& panel) {
+  EditorState& state = panel.state;
+  const Selection sel{ItemKind::outlines, -1};
+  OutlineDesc outlines = panel.shown.outlines;
+  ParamWidgets widgets = widgets_for(panel, sel);
+  Except own{widgets, [](const Param& p) { return p.name == "sets"; }};
+  visit_params(outlines, own);
+  line_sets_link(state, outlines.sets.size());
+  if (!widgets.changed) return;
+  SceneDesc scene = state.document.scene();
+  outlines.sets = scene.outlines.sets;  // the shown sets are at this frame; the document's keep their keys
+  scene.outlines = std::move(outlines);
+  commit(state, sel, std::move(scene), widgets.changed_param, widgets.changed_typed);
+}
+
 }  // namespace
 
 void draw_properties_panel(EditorState& state) {
@@ -233,7 +260,10 @@ void draw_properties_panel(EditorState& state) {
       singleton_section(panel, sel.kind, &SceneDesc::render);
       break;
     case ItemKind::outlines:
-      singleton_section(panel, sel.kind, &SceneDesc::outlines);
+      outlines_section(panel);
+      break;
+    case ItemKind::line_set:
+      line_sets_link(state, scene.outlines.sets.size());
       break;
     case ItemKind::environment:
       singleton_section(panel, sel.kind, &SceneDesc::environment);
