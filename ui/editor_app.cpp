@@ -4,6 +4,7 @@
 #include "ui/model/app_paths.h"
 #include "ui/viewport/camera_controller.h"
 #include "ui/model/file_drop.h"
+#include "ui/panels/line_sets_panel.h"
 #include "ui/panels/log_panel.h"
 #include "ui/panels/properties_panel.h"
 #include "ui/panels/render_panel.h"
@@ -423,6 +424,8 @@ void EditorApp::menu_bar() {
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Frame selected", "F")) state_.want_frame_selected = true;
     ImGui::MenuItem("Node editor", nullptr, &show_node_editor_);
+    if (ImGui::MenuItem("Properties")) right_tab_request_ = RightTab::properties;
+    if (ImGui::MenuItem("Line sets")) right_tab_request_ = RightTab::line_sets;
     if (ImGui::MenuItem("Reset camera")) {
       SceneDesc s = state_.document.scene();
       s.camera = state_.home_camera;
@@ -565,8 +568,29 @@ void EditorApp::layout(float width, float height) {
   }
   ImGui::End();
 
-  if (begin_panel("Properties", Panel::properties, placed, kPanelFlags)) draw_properties_panel(state_);
+  if (begin_panel("Properties", Panel::properties, placed, kPanelFlags)) right_tabs();
   ImGui::End();
+}
+
+void EditorApp::right_tabs() {
+  if (!ImGui::BeginTabBar("right_tabs")) return;
+  const auto flags = [&](RightTab tab) {
+    return right_tab_request_ == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+  };
+  const bool properties = ImGui::BeginTabItem("Selection", nullptr, flags(RightTab::properties));
+  widget_report::item("tabs.selection");
+  if (properties) {
+    draw_properties_panel(state_);
+    ImGui::EndTabItem();
+  }
+  const bool line_sets = ImGui::BeginTabItem("Line sets", nullptr, flags(RightTab::line_sets));
+  widget_report::item("tabs.line_sets");
+  if (line_sets) {
+    draw_line_sets_panel(state_);
+    ImGui::EndTabItem();
+  }
+  right_tab_request_ = RightTab::none;
+  ImGui::EndTabBar();
 }
 
 void EditorApp::set_ui_scale_setting(float scale) {
@@ -823,6 +847,7 @@ void EditorApp::frame(float window_width, float window_height) {
     file_dialog_.open("Add mesh", FileDialog::Mode::open, {".obj"}, start);
   }
   if (state_.want_node_editor) state_.want_node_editor = false, show_node_editor_ = true;
+  if (state_.want_line_sets) state_.want_line_sets = false, right_tab_request_ = RightTab::line_sets;
   if (state_.want_export) state_.want_export = false, export_ui_.open_dialog(state_);
   export_ui_.draw(state_);
   // A drag is one undo step: merging ends when no widget is held.

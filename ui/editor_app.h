@@ -87,6 +87,7 @@ class EditorApp {
   void layout(float width, float height);
   // Begins a panel window at its place in the layout; a drag of its inner edges resizes the layout.
   bool begin_panel(const char* name, Panel panel, const PanelRects& placed, int imgui_flags);
+  void right_tabs();
   void handle_drops();
   void change_ui_scale(float factor);
   void dialogs();
@@ -111,6 +112,9 @@ class EditorApp {
   NodeEditorPanel node_editor_;
   std::unique_ptr<MaterialSwatches> swatches_;
   bool show_node_editor_ = false;
+  // The right column's tabs: the selection's properties, the line sets. A tab asked for
+  // (View > Line sets, the outlines' "Edit in the Line sets tab") is brought forward once.
+  enum class RightTab { none, properties, line_sets } right_tab_request_ = RightTab::none;
   FileDialog file_dialog_;
   HelpWindow help_;
   MissingAssetsPanel missing_assets_;

@@ -97,7 +97,7 @@ std::vector<LineSet> compile_line_sets(const SceneDesc& desc, const LineBrushLoa
                     : d.style.brush == LineBrush::flat  ? BrushKind::flat
                                                         : BrushKind::image;
       brush.brush_image = d.style.brush_image;
-      brush.pressure = 0.4f;
+      brush.pressure = kLineBrushPressure;
       std::string error;
       set.style.brush = brushes(brush, &error);
       if (!set.style.brush && errors)

@@ -14,6 +14,10 @@
 
 namespace inkray {
 
+// The pressure a line set's procedural brush is made with (brush.h): how much its
+// paint runs out along the line.
+inline constexpr float kLineBrushPressure = 0.4f;
+
 // Loads a brush as the painterly strokes' (brush.h) for a line set's style; null with
 // *error set when its image cannot be read.
 using LineBrushLoader =

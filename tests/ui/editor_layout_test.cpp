@@ -1,7 +1,8 @@
 // The editor at the window sizes artists use (4K at twice the interface size, as its
 // monitor scale would give), under Xvfb: every reported control (the viewport's, the
-// timeline's and the render panel's toolbars) lies inside its panel's visible area and
-// inside the window, so nothing is cut off or unreachable. Screenshots are kept in the
+// timeline's and the render panel's toolbars, the right column's tabs, the Line sets
+// tab's buttons and rows) lies inside its panel's visible area and inside the window,
+// so nothing is cut off or unreachable. Screenshots are kept in the
 // test's temporary folder for looking at.
 #include "core/image/image_io.h"
 
@@ -60,27 +61,28 @@ struct WindowCase {
 
 class EditorLayout : public ::testing::TestWithParam<WindowCase> {};
 
-TEST_P(EditorLayout, EveryToolbarControlIsInsideItsPanel) {
-  if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
-  int code = 0;
-  const auto [width, height, ui_scale] = GetParam();
+// Runs the editor on `scene` at the case's size with `options` added, and checks that
+// every control it reported lies inside its panel and the window. The controls' names.
+std::map<std::string, Widget> run_and_check(const WindowCase& c, const std::string& test,
+                                            const std::string& scene, const std::string& options) {
+  const auto [width, height, ui_scale] = c;
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
-  const auto dir = std::filesystem::temp_directory_path() / ("inkray_editor_layout_" + size);
+  const auto dir = std::filesystem::temp_directory_path() / ("inkray_editor_layout_" + test + "_" + size);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  const std::string scene = std::string(INKRAY_SOURCE_DIR) + "/scenes/toon.json";
   const auto shot = dir / "editor.png", report = dir / "widgets.txt";
+  int code = 0;
   // A fresh config folder: the default panel sizes and interface size.
   const std::string out =
-      run_command(editor_command(dir, width, height) + " --ui-scale " + std::to_string(ui_scale) +
-                      " --select two_band_ball --screenshot " + shot.string() + " --widget-report " +
-                      report.string() + " --frames 10 " + scene,
+      run_command(editor_command(dir, width, height) + " --ui-scale " + std::to_string(ui_scale) + " " +
+                      options + " --screenshot " + shot.string() + " --widget-report " + report.string() +
+                      " " + std::string(INKRAY_SOURCE_DIR) + "/scenes/" + scene,
                   &code);
-  ASSERT_EQ(code, 0) << out;
+  EXPECT_EQ(code, 0) << out;
 
   RgbImage image;
   std::string error;
-  ASSERT_TRUE(read_image(shot, true, &image, &error)) << error;
+  EXPECT_TRUE(read_image(shot, true, &image, &error)) << error;
   EXPECT_EQ(image.width, width);
   EXPECT_EQ(image.height, height);
 
@@ -88,18 +90,40 @@ TEST_P(EditorLayout, EveryToolbarControlIsInsideItsPanel) {
   const auto widgets = read_report(report, &window);
   EXPECT_EQ(window.x1, float(width));
   EXPECT_EQ(window.y1, float(height));
-  int viewport_controls = 0, render_controls = 0, timeline_controls = 0;
   for (const auto& [name, w] : widgets) {
     EXPECT_TRUE(inside(w.item, w.visible)) << name << " is clipped by its panel at " << size;
     EXPECT_TRUE(inside(w.item, window)) << name << " is outside the window at " << size;
-    viewport_controls += name.rfind("viewport.", 0) == 0;
-    render_controls += name.rfind("render.", 0) == 0;
-    timeline_controls += name.rfind("timeline.", 0) == 0;
   }
+  return widgets;
+}
+
+size_t count_starting(const std::map<std::string, Widget>& widgets, const std::string& prefix) {
+  size_t n = 0;
+  for (const auto& entry : widgets) n += entry.first.rfind(prefix, 0) == 0;
+  return n;
+}
+
+TEST_P(EditorLayout, EveryToolbarControlIsInsideItsPanel) {
+  if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
+  const auto widgets =
+      run_and_check(GetParam(), "toolbars", "toon.json", "--select two_band_ball --frames 10");
   // The toolbars report themselves; a renamed or lost report would make this test vacuous.
-  EXPECT_GE(viewport_controls, 6) << "the viewport toolbar reported too few controls";
-  EXPECT_GE(render_controls, 1) << "the render panel reported no controls";
-  EXPECT_GE(timeline_controls, 10) << "the timeline reported too few controls";
+  EXPECT_GE(count_starting(widgets, "viewport."), 6u) << "the viewport toolbar reported too few controls";
+  EXPECT_GE(count_starting(widgets, "render."), 1u) << "the render panel reported no controls";
+  EXPECT_GE(count_starting(widgets, "timeline."), 10u) << "the timeline reported too few controls";
+  EXPECT_EQ(count_starting(widgets, "tabs."), 2u) << "the right column's tabs are not reported";
+}
+
+// The Line sets tab open on a scene with two sets: its buttons, rows and switches.
+TEST_P(EditorLayout, EveryLineSetsControlIsInsideItsPanel) {
+  if (const std::string why = editor_unavailable(); !why.empty()) GTEST_SKIP() << why;
+  const auto dir = std::filesystem::temp_directory_path() / "inkray_editor_layout_script";
+  std::filesystem::create_directories(dir);
+  const auto script = dir / ("open_line_sets_" + std::to_string(GetParam().width) + ".txt");
+  std::ofstream(script) << "wait 2\nhover tabs.line_sets\nclick\nwait 3\n";
+  const auto widgets = run_and_check(GetParam(), "line_sets", "lines_technical.json",
+                                     "--threads 1 --frames 30 --input-script " + script.string());
+  EXPECT_EQ(count_starting(widgets, "line_sets."), 5u + 2u * 2u) << "buttons, and each set's row and switch";
 }
 
 std::string size_name(const ::testing::TestParamInfo<WindowCase>& c) {

@@ -46,6 +46,15 @@ struct EditorState {
   bool add_mesh_native_size = false;  // else the mesh is fitted to the view
   bool want_export = false;
   bool want_node_editor = false;  // the properties panel's "Edit nodes"
+  bool want_line_sets = false;    // the properties panel's "Edit in the Line sets tab"
+
+  // The Line sets panel's chosen set (ui/panels/line_sets_panel.h), an index into
+  // outlines.sets, kept apart from `selection` so choosing a set keeps the object
+  // selected; `reveal`: scroll the list to it (it was just added or moved).
+  struct LineSetChoice {
+    int index = 0;
+    bool reveal = false;
+  } line_set;
 
   // Playback (ui/panels/timeline_panel.h): the shell advances the frame while it is on, and
   // holds it while the timeline's frame is dragged.

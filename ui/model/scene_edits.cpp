@@ -16,9 +16,9 @@ namespace {
 
 constexpr std::string_view kDefaultMaterial = "default";
 
-template <class T>
-bool name_taken(const SharedList<T>& items, std::string_view name) {
-  return std::any_of(items.begin(), items.end(), [&](const T& item) { return item.name == name; });
+template <class List>
+bool name_taken(const List& items, std::string_view name) {
+  return std::any_of(items.begin(), items.end(), [&](const auto& item) { return item.name == name; });
 }
 
 bool name_taken(const SceneDesc& scene, ItemKind kind, std::string_view name) {
@@ -31,6 +31,8 @@ bool name_taken(const SceneDesc& scene, ItemKind kind, std::string_view name) {
       return name_taken(scene.materials, name);
     case ItemKind::emitter:
       return name_taken(scene.strokes, name);
+    case ItemKind::line_set:
+      return name_taken(scene.outlines.sets, name);
     default:
       return false;
   }
@@ -54,10 +56,10 @@ Selection add_object(SceneDesc& scene, std::string_view base, ShapeVariant shape
   return {ItemKind::object, int(scene.objects.size()) - 1};
 }
 
-// Objects, lights, materials and emitters: entries of a list, each under a name of its own.
+// Objects, lights, materials, emitters and line sets: entries of a list, each under a name of its own.
 bool is_named(ItemKind kind) {
   return kind == ItemKind::object || kind == ItemKind::light || kind == ItemKind::material ||
-         kind == ItemKind::emitter;
+         kind == ItemKind::emitter || kind == ItemKind::line_set;
 }
 
 // The section of the document an item is in, as animation paths name it: the list a named
@@ -80,15 +82,17 @@ std::string_view section_of(ItemKind kind) {
       return "materials";
     case ItemKind::emitter:
       return "strokes";
+    case ItemKind::line_set:
+      return "outlines/sets";
     case ItemKind::none:
       break;
   }
   return {};
 }
 
-template <class T>
-Selection duplicate_in(SceneDesc& scene, SharedList<T>& items, ItemKind kind, int index) {
-  T copy = items[size_t(index)];
+template <class List>
+Selection duplicate_in(SceneDesc& scene, List& items, ItemKind kind, int index) {
+  auto copy = items[size_t(index)];
   copy.name = unique_name(scene, kind, copy.name);
   const std::string_view section = section_of(kind);
   copy_tracks(scene, entry_path(section, items[size_t(index)].name), entry_path(section, copy.name));
@@ -205,6 +209,8 @@ Selection duplicate_item(SceneDesc& scene, const Selection& item) {
       return duplicate_in(scene, scene.materials, item.kind, item.index);
     case ItemKind::emitter:
       return duplicate_in(scene, scene.strokes, item.kind, item.index);
+    case ItemKind::line_set:
+      return duplicate_in(scene, scene.outlines.sets, item.kind, item.index);
     default:
       return {};
   }
@@ -227,6 +233,9 @@ bool delete_item(SceneDesc& scene, const Selection& item) {
       break;
     case ItemKind::emitter:
       scene.strokes.erase(scene.strokes.begin() + item.index);
+      break;
+    case ItemKind::line_set:
+      scene.outlines.sets.erase(scene.outlines.sets.begin() + item.index);
       break;
     case ItemKind::material: {
       const std::string& name = scene.materials[size_t(item.index)].name;
@@ -276,6 +285,9 @@ bool rename_item(SceneDesc& scene, const Selection& item, const std::string& nam
       return true;
     case ItemKind::emitter:
       scene.strokes[size_t(item.index)].name = name;
+      return true;
+    case ItemKind::line_set:
+      scene.outlines.sets[size_t(item.index)].name = name;
       return true;
     default:
       return false;

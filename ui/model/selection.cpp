@@ -3,8 +3,8 @@
 namespace inkray {
 namespace {
 
-template <class T>
-bool in_range(const SharedList<T>& items, int index) {
+template <class List>
+bool in_range(const List& items, int index) {
   return index >= 0 && index < int(items.size());
 }
 
@@ -20,6 +20,8 @@ bool is_valid(const SceneDesc& scene, const Selection& s) {
       return in_range(scene.materials, s.index);
     case ItemKind::emitter:
       return in_range(scene.strokes, s.index);
+    case ItemKind::line_set:
+      return in_range(scene.outlines.sets, s.index);
     default:
       return true;
   }
@@ -50,6 +52,8 @@ std::string item_name(const SceneDesc& scene, const Selection& s) {
       return scene.materials[size_t(s.index)].name;
     case ItemKind::emitter:
       return scene.strokes[size_t(s.index)].name;
+    case ItemKind::line_set:
+      return scene.outlines.sets[size_t(s.index)].name;
   }
   return {};
 }

@@ -7,7 +7,20 @@
 
 namespace inkray {
 
-enum class ItemKind { none, camera, render, environment, outlines, object, light, material, emitter };
+// A line set (outlines.sets) is an item of its own: the Line sets panel edits it by the
+// same paths as the rest (ui/panels/line_sets_panel.h), and its tracks follow its name.
+enum class ItemKind {
+  none,
+  camera,
+  render,
+  environment,
+  outlines,
+  object,
+  light,
+  material,
+  emitter,
+  line_set
+};
 
 struct Selection {
   ItemKind kind = ItemKind::none;

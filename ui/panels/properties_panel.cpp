@@ -1,10 +1,9 @@
 #include "ui/panels/properties_panel.h"
 
 #include "core/document/graph_edit.h"
-#include "core/document/edit_checks.h"
 #include "core/document/param_text.h"
+#include "ui/panels/param_panel.h"
 #include "ui/widgets/key_actions.h"
-#include "ui/widgets/param_widgets.h"
 #include "ui/model/scene_edits.h"
 
 #include <imgui.h>
@@ -18,74 +17,9 @@
 namespace inkray {
 namespace {
 
-// ImGui 1.86 has no SeparatorText.
-void section_title(const char* title) {
-  ImGui::Spacing();
-  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.f, 1.f), "%s", title);
-  ImGui::Separator();
-}
-
-std::string merge_key(const Selection& s, const std::string& param) {
-  return std::to_string(int(s.kind)) + ":" + std::to_string(s.index) + ":" + param;
-}
-
-// What the panel's widgets share while it is drawn: the editor's state, the document
-// at the current frame (the values shown), and the keys the fields ask for.
-struct Panel {
-  EditorState& state;
-  const SceneDesc& shown;
-  KeyTargets keys;
-};
-
-// The widgets' context for one item: the scene's names and folder, that item's last
-// problem, shown beside its field, and the item's keys (`group` sits between the
-// item's path and its parameters': "transform", "lines").
-ParamWidgets widgets_for(Panel& panel, const Selection& item, std::string_view group = {},
-                         std::string_view self_name = {}) {
-  const EditorState& state = panel.state;
-  ParamWidgets widgets;
-  widgets.scene = &state.document.scene();
-  widgets.self_name = self_name;
-  if (state.problem_item == item) {
-    widgets.problem_param = state.problem_param;
-    widgets.problem_message = state.problem_message;
-  }
-  widgets.keys = &panel.keys;
-  widgets.key_item = item;
-  widgets.key_group = group;
-  return widgets;
-}
-
-// The problem of a field drawn here rather than by the generated widgets.
-void problem_beside(const EditorState& state, const Selection& item, std::string_view param) {
-  if (state.problem_item != item || state.problem_param != param || state.problem_message.empty()) return;
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.35f, 0.3f, 1.f));
-  ImGui::PushTextWrapPos(0.f);
-  ImGui::TextUnformatted(state.problem_message.c_str());
-  ImGui::PopTextWrapPos();
-  ImGui::PopStyleColor();
-}
-
-// What the generated widgets of one struct changed.
-struct Edited {
-  bool changed = false;
-  bool typed = false;  // typed text: a name or a path
-  std::string param;
-  Edited& operator|=(const Edited& later) {
-    if (later.changed) *this = later;
-    return *this;
-  }
-};
-
-template <class Desc>
-Edited edit_item(Desc& desc, ParamWidgets widgets) {
-  visit_params(desc, widgets);
-  return {widgets.changed, widgets.changed_typed, widgets.changed_param};
-}
-
 // A tagged variant's type combo and its alternative's widgets.
 template <class Variant>
-Edited edit_tagged_item(Panel& panel, const Selection& sel, const char* label, Variant& value,
+Edited edit_tagged_item(ParamPanel& panel, const Selection& sel, const char* label, Variant& value,
                         std::string_view group = {}) {
   Edited edited;
   if (edit_variant_type(label, value)) edited = {true, false, "type"};
@@ -95,76 +29,15 @@ Edited edit_tagged_item(Panel& panel, const Selection& sel, const char* label, V
   return edited;
 }
 
-void set_problem(EditorState& state, const Selection& item, const std::string& param, std::string message) {
-  state.problem_item = item;
-  state.problem_param = param;
-  state.problem_message = std::move(message);
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-  std::string text;
-  for (const std::string& line : lines) text += (text.empty() ? "" : "\n") + line;
-  return text;
-}
-
-// Every edit of the panel ends here. One that would make the scene unrenderable is
-// refused, with the reason beside its field; typed text (a name, a path) is kept,
-// since typing passes through such states, and the reason shows until it is mended.
-void commit(EditorState& state, const Selection& item, SceneDesc after, const std::string& param,
-            bool typed) {
-  const std::vector<std::string> added = problems_added(state.document.scene(), after);
-  if (!added.empty() && !typed) {
-    set_problem(state, item, param, "Not applied: " + joined(added));
-    return;
-  }
-  if (added.empty()) {
-    if (state.problem_item == item) set_problem(state, {}, {}, {});
-  } else {
-    set_problem(state, item, param, joined(added));
-  }
-  state.edit(std::move(after), "Edit " + param, merge_key(item, param));
-}
-
-// The document with an edited copy of a named item. A changed name is applied with
-// rename_item so references to it follow; an empty or taken name keeps the old one.
-template <class T>
-std::optional<SceneDesc> with_named(EditorState& state, const Selection& sel, SharedList<T> SceneDesc::*list,
-                                    T edited, const std::string& param) {
-  SceneDesc scene = state.document.scene();
-  const std::string old_name = (scene.*list)[size_t(sel.index)].name;
-  if (edited.name != old_name) {
-    if (!rename_item(scene, sel, edited.name)) {
-      set_problem(state, sel, param,
-                  edited.name.empty() ? "Not applied: a name cannot be empty"
-                                      : "Not applied: the name " + in_quotes(edited.name) + " is taken");
-      return std::nullopt;
-    }
-    // Renaming rewrites references inside the edited item too (a material's own mix inputs).
-    edited.name = (scene.*list)[size_t(sel.index)].name;
-  }
-  if constexpr (std::is_same_v<T, ObjectDesc>) {
-    edited.name = (scene.*list)[size_t(sel.index)].name;
-  }
-  (scene.*list)[size_t(sel.index)] = std::move(edited);
-  return scene;
-}
-
-template <class T>
-void commit_named(EditorState& state, const Selection& sel, SharedList<T> SceneDesc::*list, T edited,
-                  const std::string& param, bool typed) {
-  if (auto scene = with_named(state, sel, list, std::move(edited), param))
-    commit(state, sel, std::move(*scene), param, typed);
-}
-
 // A name field: typed text, its problem beside it.
-bool edit_name(Panel& panel, const Selection& sel, std::string& name, std::string_view doc) {
+bool edit_name(ParamPanel& panel, const Selection& sel, std::string& name, std::string_view doc) {
   ParamWidgets widgets = widgets_for(panel, sel);
   widgets(text("name", doc), name);
   return widgets.changed;
 }
 
 // The material's type and settings; a graph's nodes are the node editor's.
-Edited edit_material_data(Panel& panel, const Selection& sel, MaterialDesc& m) {
+Edited edit_material_data(ParamPanel& panel, const Selection& sel, MaterialDesc& m) {
   EditorState& state = panel.state;
   const MaterialVariant before = m.data;
   Edited edited;
@@ -190,7 +63,7 @@ Edited edit_material_data(Panel& panel, const Selection& sel, MaterialDesc& m) {
 }
 
 // Scale with a lock: locked, editing one component scales all three alike (param_text.h).
-bool edit_scale(Panel& panel, const Selection& sel, Vec3& scale, std::string* param) {
+bool edit_scale(ParamPanel& panel, const Selection& sel, Vec3& scale, std::string* param) {
   static constexpr Param kScale =
       vector("scale", "Scale along the object's own axes, applied first").labelled("Scale");
   EditorState& state = panel.state;
@@ -211,7 +84,7 @@ bool edit_scale(Panel& panel, const Selection& sel, Vec3& scale, std::string* pa
   return true;
 }
 
-bool edit_transform(Panel& panel, const Selection& sel, TransformDesc& t, std::string* param) {
+bool edit_transform(ParamPanel& panel, const Selection& sel, TransformDesc& t, std::string* param) {
   static constexpr Param kTranslate =
       vector("translate", "Moves the object, applied last").labelled("Position");
   ParamWidgets translate = widgets_for(panel, sel, "transform");
@@ -237,7 +110,7 @@ bool edit_transform(Panel& panel, const Selection& sel, TransformDesc& t, std::s
   return changed;
 }
 
-void material_section(Panel& panel, int index) {
+void material_section(ParamPanel& panel, int index) {
   EditorState& state = panel.state;
   const Selection sel{ItemKind::material, index};
   MaterialDesc m = panel.shown.materials[size_t(index)];
@@ -258,22 +131,25 @@ void material_section(Panel& panel, int index) {
   commit(state, sel, std::move(*scene), edited.param, edited.typed);
 }
 
-// The object's own parameters but its outline overrides, which come last.
-struct WithoutGroups {
+// A struct's parameters but those `skip` picks, which the caller draws elsewhere.
+template <class Skip>
+struct Except {
   ParamWidgets& widgets;
+  Skip skip;
   template <class F>
   void operator()(const Param& p, F& field) {
-    if (p.kind != ParamKind::group) widgets(p, field);
+    if (!skip(p)) widgets(p, field);
   }
 };
 
-void object_section(Panel& panel, int index) {
+void object_section(ParamPanel& panel, int index) {
   EditorState& state = panel.state;
   const SceneDesc& scene = panel.shown;
   const Selection sel{ItemKind::object, index};
   ObjectDesc o = scene.objects[size_t(index)];
   ParamWidgets own = widgets_for(panel, sel);
-  WithoutGroups top{own};
+  // The outline overrides come last.
+  Except top{own, [](const Param& p) { return p.kind == ParamKind::group; }};
   visit_params(o, top);
   Edited edited{own.changed, own.changed_typed, own.changed_param};
   section_title("Transform");
@@ -317,7 +193,7 @@ void object_section(Panel& panel, int index) {
 
 // Singletons (camera, render settings, outlines, environment) have no name to keep consistent.
 template <class T>
-void singleton_section(Panel& panel, ItemKind kind, T SceneDesc::*member) {
+void singleton_section(ParamPanel& panel, ItemKind kind, T SceneDesc::*member) {
   EditorState& state = panel.state;
   const Selection sel{kind, -1};
   T value = panel.shown.*member;
@@ -334,12 +210,34 @@ void singleton_section(Panel& panel, ItemKind kind, T SceneDesc::*member) {
   }
 }
 
+// Line sets have a tab of their own, with their styles' swatches and their keys.
+void line_sets_link(EditorState& state, size_t count) {
+  ImGui::Spacing();
+  ImGui::TextDisabled("%zu line set%s", count, count == 1 ? "" : "s");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Edit in the Line sets tab")) state.want_line_sets = true;
+}
+
+// The outlines' settings but their line sets.
+void outlines_section(ParamPanel& panel) {
+  EditorState& state = panel.state;
+  const Selection sel{ItemKind::outlines, -1};
+  OutlineDesc outlines = panel.shown.outlines;
+  ParamWidgets widgets = widgets_for(panel, sel);
+  Except own{widgets, [](const Param& p) { return p.name == "sets"; }};
+  visit_params(outlines, own);
+  line_sets_link(state, outlines.sets.size());
+  if (!widgets.changed) return;
+  SceneDesc scene = state.document.scene();
+  outlines.sets = scene.outlines.sets;  // the shown sets are at this frame; the document's keep their keys
+  scene.outlines = std::move(outlines);
+  commit(state, sel, std::move(scene), widgets.changed_param, widgets.changed_typed);
+}
+
 }  // namespace
 
 void draw_properties_panel(EditorState& state) {
-  Panel panel{state, state.shown(), {}};
-  panel.keys.document = &state.document.scene();
-  panel.keys.report = state.report_params;
+  ParamPanel panel(state);
   const SceneDesc& scene = panel.shown;
   const Selection sel = validated(scene, state.selection);
   if (sel.kind == ItemKind::none) {
@@ -362,7 +260,10 @@ void draw_properties_panel(EditorState& state) {
       singleton_section(panel, sel.kind, &SceneDesc::render);
       break;
     case ItemKind::outlines:
-      singleton_section(panel, sel.kind, &SceneDesc::outlines);
+      outlines_section(panel);
+      break;
+    case ItemKind::line_set:
+      line_sets_link(state, scene.outlines.sets.size());
       break;
     case ItemKind::environment:
       singleton_section(panel, sel.kind, &SceneDesc::environment);

@@ -6,6 +6,7 @@
 #include "ui/viewport/picking.h"
 #include "ui/model/scene_edits.h"
 #include "ui/viewport/viewport_overlay.h"
+#include "ui/widgets/toolbar_flow.h"
 #include "ui/widgets/widget_report.h"
 
 #include <GL/gl.h>
@@ -23,30 +24,6 @@ constexpr const char* kNavMergeKey = "viewport:camera";
 constexpr float kClickSlop = 3.f;  // window pixels a click may stray before it is a drag
 constexpr int kStatsKey = 'I';
 constexpr int kGizmoModeKey = 'W';
-
-// Lays toolbar widgets out left to right and starts a new line where the next one would
-// be clipped: each is measured before it is drawn.
-class ToolbarFlow {
- public:
-  void next(float width) {
-    if (started_) {
-      const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-      if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
-    }
-    started_ = true;
-  }
-
- private:
-  bool started_ = false;
-};
-
-float text_width(const char* label) { return ImGui::CalcTextSize(label, nullptr, true).x; }
-float button_width(const char* label) { return text_width(label) + 2.f * ImGui::GetStyle().FramePadding.x; }
-float labelled_width(float item, const char* label) {
-  const float text = text_width(label);
-  return item + (text > 0.f ? ImGui::GetStyle().ItemInnerSpacing.x + text : 0.f);
-}
-float checkbox_width(const char* label) { return labelled_width(ImGui::GetFrameHeight(), label); }
 
 // Whether the viewport may take a plain key: no widget wants text and no Ctrl or Alt
 // (those are the menus' shortcuts).

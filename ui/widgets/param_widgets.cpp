@@ -45,13 +45,18 @@ void draw_key_diamond(ImDrawList* draw, float x, float y, float r, unsigned fill
   if (outline != 0) draw->AddQuad(top, right, bottom, left, outline, std::max(1.f, r * 0.3f));
 }
 
+std::string ParamWidgets::field_path(std::string_view name) const {
+  std::string param = key_group;
+  param += (param.empty() || path_.empty() ? "" : ".") + path_;
+  if (!name.empty()) param += (param.empty() || param.back() == '.' ? "" : ".") + std::string(name);
+  if (!param.empty() && param.back() == '.') param.pop_back();  // the group being drawn
+  return key_path(*keys->document, key_item, param);
+}
+
 void ParamWidgets::key_marks(const Param& p, float mark_x) {
   if (!keys || !keys->document) return;
   const SceneDesc& doc = *keys->document;
-  std::string param = key_group;
-  param += (param.empty() || path_.empty() ? "" : ".") + path_;
-  param += (param.empty() || param.back() == '.' ? "" : ".") + std::string(p.name);
-  const std::string path = key_path(doc, key_item, param);
+  const std::string path = field_path(p.name);
   if (path.empty() || !animation_target(doc, path, nullptr)) return;
   const KeyState state = key_state(doc, path, doc.render.frame);
   if (state != KeyState::none) {
@@ -318,10 +323,17 @@ ParamWidgets::ItemAction ParamWidgets::item_buttons(bool can_go_up, bool can_go_
 }
 
 bool ParamWidgets::preset_combo(std::span<const std::string_view> names, int* chosen) {
+  // Scripts find the combo by its group's path ("preset:outlines/sets/ink/style") and
+  // its entries by name ("preset_menu.pencil").
+  const bool report = keys && keys->report && keys->document;
   bool picked = false;
-  if (ImGui::BeginCombo("Preset", "choose...")) {
-    for (int i = 0; i < int(names.size()); ++i)
+  const bool open = ImGui::BeginCombo("Preset", "choose...");
+  if (report) widget_report::item("preset:" + field_path({}));
+  if (open) {
+    for (int i = 0; i < int(names.size()); ++i) {
       if (ImGui::Selectable(derived_label(names[size_t(i)]).c_str(), false)) *chosen = i, picked = true;
+      if (report) widget_report::item("preset_menu." + std::string(names[size_t(i)]));
+    }
     ImGui::EndCombo();
   }
   return picked;

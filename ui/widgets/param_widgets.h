@@ -73,9 +73,9 @@ struct ParamWidgets {
   }
   // A graph's nodes are drawn by the node editor (node_editor_panel.h), not as a list.
   void operator()(const Param&, std::vector<GraphNodeDesc>&) {}
-  // A list of structs (ramp stops, links, line sets): each entry's widgets, buttons to
-  // remove it and to move it up or down (where order matters, as line sets' drawing
-  // order), an add button.
+  // A list of structs (ramp stops, links): each entry's widgets, buttons to remove it
+  // and to move it up or down (where order matters), an add button. Line sets have a
+  // panel of their own (ui/panels/line_sets_panel.h).
   template <ParamGroup T>
   void operator()(const Param& p, std::vector<T>& items) {
     if (!begin_group(p)) return;
@@ -130,6 +130,9 @@ struct ParamWidgets {
   enum class ItemAction { none, remove, up, down };
   ItemAction item_buttons(bool can_go_up, bool can_go_down);
   bool add_button();
+  // The animation path of the field `name` drawn now, or of the group being drawn for
+  // an empty name (key_path, scene_edits.h); needs keys->document.
+  std::string field_path(std::string_view name) const;
   // A "Preset" combo over `names`; true with *chosen set when one was picked.
   bool preset_combo(std::span<const std::string_view> names, int* chosen);
   // The tooltip and, when it names this parameter, the problem in red.
