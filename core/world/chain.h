@@ -31,6 +31,11 @@ struct Chain {
   int material = -1;    // document material index, likewise
   bool closed = false;  // the last point joins the first
   int covers = 0;       // surfaces between the camera and the line: 0 seen, 1 and more hidden
+  // Whether the first and the last point stop where the line meets others of its type
+  // (a crossing it was not joined through: the stem of a T, a corner of several
+  // lines). Which lines are joined there can change from frame to frame; a style
+  // draws such an end as it draws the middle, not as a tip.
+  std::array<bool, 2> ends_at_crossing{false, false};
   std::vector<ChainPoint> points;
 };
 

@@ -197,6 +197,7 @@ std::vector<Chain> build_chains(const ChainSource& source, const ChainOptions& o
         Chain c;
         c.type = LineType(t);
         c.closed = traced.closed;
+        c.ends_at_crossing = traced.ends_at_crossing;
         // Thinning may hook a line's last pixels aside; its ends come back along the
         // tangent of what is left (extend_ends).
         std::vector<Vec2> pixels = traced.pixels;

@@ -31,6 +31,9 @@ Chain piece_of(const Chain& chain, int first, int last) {
   piece.closed = false;
   piece.points.clear();
   const int n = int(chain.points.size());
+  // A cut end is a corner, not a crossing: only the chain's own ends keep theirs.
+  piece.ends_at_crossing = {!chain.closed && first == 0 && chain.ends_at_crossing[0],
+                            !chain.closed && last == n - 1 && chain.ends_at_crossing[1]};
   const int count = last == first ? n + 1 : (last - first + n) % n + 1;
   for (int k = 0; k < count; ++k) piece.points.push_back(chain.points[size_t((first + k) % n)]);
   return piece;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace inkray {
 
@@ -10,7 +11,10 @@ void orient_chain(Chain& c) {
   if (pts.size() < 2) return;
   auto before = [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
   if (!c.closed) {
-    if (before(pts.back().p, pts.front().p)) std::reverse(pts.begin(), pts.end());
+    if (before(pts.back().p, pts.front().p)) {
+      std::reverse(pts.begin(), pts.end());
+      std::swap(c.ends_at_crossing[0], c.ends_at_crossing[1]);
+    }
     return;
   }
   double area = 0.0;

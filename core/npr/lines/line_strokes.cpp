@@ -7,6 +7,7 @@
 #include "core/npr/lines/stroke_jitter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -102,10 +103,13 @@ float taper_ease(float x) {
   return x * (2.f - x);
 }
 
-float taper(const LineStyle& style, float s, float length) {
+// An end at a crossing is not a tip (Chain::ends_at_crossing): which lines are joined
+// through a crossing may change from frame to frame, and the line goes on there anyway.
+float taper(const LineStyle& style, const std::array<bool, 2>& ends_at_crossing, float s, float length) {
   float f = 1.f;
-  if (style.taper_start > 0.f) f *= taper_ease(s / (style.taper_start * length));
-  if (style.taper_end > 0.f) f *= taper_ease((length - s) / (style.taper_end * length));
+  if (style.taper_start > 0.f && !ends_at_crossing[0]) f *= taper_ease(s / (style.taper_start * length));
+  if (style.taper_end > 0.f && !ends_at_crossing[1])
+    f *= taper_ease((length - s) / (style.taper_end * length));
   return f;
 }
 
@@ -171,7 +175,7 @@ LineStroke styled_stroke(const Chain& piece, const LineStyle& style, float scale
     const float along = length > 0.f ? sample.v / length : 0.f;
     const float width_factor =
         glm::mix(1.f, style.width_min, modulation_value(style.width_by, q, along, values));
-    const float tapered = piece.closed ? 1.f : taper(style, sample.v, length);
+    const float tapered = piece.closed ? 1.f : taper(style, piece.ends_at_crossing, sample.v, length);
     sample.half_width =
         std::max(0.f, 0.5f * style.width * scale * width_factor * tapered * pressure(style.pressure, along));
     sample.color =

@@ -51,7 +51,8 @@ float stroke_length(const LineStroke& stroke);
 //     topmost point, in its own orientation), so a chain traced the other way round or
 //     listed elsewhere next frame jitters the same;
 //   - tapered over taper_start and taper_end fractions of the (extended) length, the
-//     width easing to zero at the tip (loops are not tapered);
+//     width easing to zero at the tip; loops, and ends that stop in a crossing
+//     (Chain::ends_at_crossing), are not tapered;
 //   - widened or thinned by the pressure curve at the fraction of the stroke's length;
 //   - width, colour and opacity modulated (LineModulation): a multiplier 1 where the
 //     value reads 0 and width_min / opacity_min where it reads 1, a colour from

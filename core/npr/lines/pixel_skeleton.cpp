@@ -262,6 +262,7 @@ std::vector<PixelPath> PixelSkeleton::trace(const std::vector<uint32_t>& input, 
   const auto walk = [&](int g, int enter, bool loop) {
     PixelPath path;
     path.closed = loop;
+    path.ends_at_crossing[0] = segments[size_t(g)].cluster[size_t(enter)] >= 0;
     while (g >= 0 && !used[size_t(g)]) {
       used[size_t(g)] = 1;
       const Segment& seg = segments[size_t(g)];
@@ -272,9 +273,11 @@ std::vector<PixelPath> PixelSkeleton::trace(const std::vector<uint32_t>& input, 
         const Vec2 v = pos(p);
         if (path.pixels.empty() || path.pixels.back() != v) path.pixels.push_back(v);
       }
+      path.ends_at_crossing[1] = seg.cluster[size_t(1 - enter)] >= 0;
       const auto [next, next_end] = link[size_t(g)][size_t(1 - enter)];
       g = next, enter = next_end;
     }
+    if (path.closed) path.ends_at_crossing = {false, false};
     if (path.closed && path.pixels.size() > 1 && path.pixels.front() == path.pixels.back())
       path.pixels.pop_back();
     if (path.pixels.size() >= 2) paths.push_back(std::move(path));

@@ -6,6 +6,7 @@
 
 #include "core/math/types.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -14,6 +15,9 @@ namespace inkray {
 struct PixelPath {
   std::vector<Vec2> pixels;  // pixel centres in order
   bool closed = false;       // the last pixel neighbours the first
+  // Whether the first and the last pixel end in a crossing (one no partner was joined
+  // through there): the line goes on, as other paths, where this one stops.
+  std::array<bool, 2> ends_at_crossing{false, false};
 };
 
 // Reused across line types and images of one size: it keeps its mask, so tracing

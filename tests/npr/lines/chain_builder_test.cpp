@@ -79,6 +79,13 @@ TEST(ChainBuilder, TIsABarAndAStem) {
   std::sort(lengths.begin(), lengths.end());
   EXPECT_NEAR(lengths[0], 88.f, 3.f);
   EXPECT_NEAR(lengths[1], 108.f, 3.f);
+  // The stem stops at the bar, its top end in the crossing; the bar's ends are free.
+  const Chain& stem = chain_length(chains[0]) < chain_length(chains[1]) ? chains[0] : chains[1];
+  const Chain& bar = &stem == &chains[0] ? chains[1] : chains[0];
+  const bool top_first = stem.points.front().p.y < stem.points.back().p.y;
+  EXPECT_TRUE(stem.ends_at_crossing[top_first ? 0 : 1]);
+  EXPECT_FALSE(stem.ends_at_crossing[top_first ? 1 : 0]);
+  EXPECT_FALSE(bar.ends_at_crossing[0] || bar.ends_at_crossing[1]);
 }
 
 TEST(ChainBuilder, DashedLineIsOneChainPerDashInOrder) {

@@ -20,9 +20,12 @@ Chain chain_through(std::initializer_list<Vec2> points, bool closed) {
 
 TEST(ChainShape, AnOpenChainStartsAtItsEndWithTheSmallerX) {
   Chain c = chain_through({{5.f, 1.f}, {3.f, 2.f}, {1.f, 4.f}}, false);
+  c.ends_at_crossing = {true, false};
   orient_chain(c);
   EXPECT_EQ(c.points.front().p, Vec2(1.f, 4.f));
   EXPECT_EQ(c.points.back().p, Vec2(5.f, 1.f));
+  EXPECT_FALSE(c.ends_at_crossing[0]);  // the ends keep what they meet
+  EXPECT_TRUE(c.ends_at_crossing[1]);
   // Ends at the same x: the smaller y first.
   Chain upright = chain_through({{2.f, 9.f}, {3.f, 5.f}, {2.f, 1.f}}, false);
   orient_chain(upright);

@@ -185,6 +185,45 @@ TEST(LineStrokes, PressureCurveScalesTheWidthAlongTheLine) {
   for (const StrokeSample& sample : flat[0].samples) EXPECT_FLOAT_EQ(sample.half_width, 0.5f);
 }
 
+// Which lines are joined through a crossing may change from frame to frame: a line
+// drawn as one chain through it, or as two chains stopping there, must not grow tips
+// there, and stays as wide there as the joined line is.
+TEST(LineStrokes, NoTaperWhereAChainStopsAtACrossing) {
+  LineStyle style = plain_style(4.f);
+  style.taper_start = style.taper_end = 0.3f;
+  Chain left = straight_chain(Vec2(0.f), Vec2(100.f, 0.f)),
+        right = straight_chain(Vec2(100.f, 0.f), Vec2(200.f, 0.f));
+  left.ends_at_crossing = {false, true};
+  right.ends_at_crossing = {true, false};
+  const std::vector<LineStroke> joined = stroke_one(straight_chain(Vec2(0.f), Vec2(200.f, 0.f)), style);
+  const std::vector<LineStroke> split = stroke_chains({left, right}, {line_set("lines", style)}, 1080);
+  ASSERT_EQ(joined.size(), 1u);
+  ASSERT_EQ(split.size(), 2u);
+  EXPECT_FLOAT_EQ(split[0].samples.front().half_width, 0.f);  // the free ends are tips
+  EXPECT_FLOAT_EQ(split[1].samples.back().half_width, 0.f);
+  const auto width_at = [](const LineStroke& stroke, float x) {
+    for (const StrokeSample& q : stroke.samples)
+      if (std::abs(q.p.x - x) < 0.5f) return q.half_width;
+    return -1.f;
+  };
+  for (float x : {90.f, 100.f, 110.f}) {
+    EXPECT_FLOAT_EQ(width_at(joined[0], x), 2.f) << x;
+    EXPECT_FLOAT_EQ(width_at(x <= 100.f ? split[0] : split[1], x), 2.f) << x;
+  }
+  // Split at a corner, the cut ends are corners, not crossings: they taper.
+  Chain bent = left;
+  bent.ends_at_crossing = {true, true};
+  const Chain down = straight_chain(Vec2(100.f, 0.f), Vec2(100.f, 100.f));
+  bent.points.insert(bent.points.end(), down.points.begin() + 1, down.points.end());
+  style.corner_angle = 120.f;
+  const std::vector<LineStroke> pieces = stroke_one(bent, style);
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_FLOAT_EQ(pieces[0].samples.front().half_width, 2.f);
+  EXPECT_FLOAT_EQ(pieces[0].samples.back().half_width, 0.f);
+  EXPECT_FLOAT_EQ(pieces[1].samples.front().half_width, 0.f);
+  EXPECT_FLOAT_EQ(pieces[1].samples.back().half_width, 2.f);
+}
+
 TEST(LineStrokes, OvershootExtendsAlongTheEndTangents) {
   LineStyle style = plain_style();
   style.overshoot = 6.f;
