@@ -110,6 +110,11 @@ bool ProgressiveRenderer::wait_for_generation(uint64_t after,
   return published_.wait_until(lock, deadline, [&] { return generation_ > after; });
 }
 
+bool ProgressiveRenderer::wait_until_idle(std::chrono::steady_clock::time_point deadline) const {
+  std::unique_lock lock(mutex_);
+  return idle_.wait_until(lock, deadline, [&] { return sleeping_; });
+}
+
 std::shared_ptr<const ViewportSnapshot> ProgressiveRenderer::latest() const {
   std::lock_guard lock(mutex_);
   return latest_;
@@ -163,9 +168,15 @@ void ProgressiveRenderer::execute(const ViewportWork& work) {
 ViewportRequests ProgressiveRenderer::take(bool wake_to_render) {
   std::unique_lock lock(mutex_);
   Requests& r = requests_;
-  wake_.wait(lock, [&] {
+  const auto has_work = [&] {
     return r.stop || r.document || r.region_changed || r.view_changed || (wake_to_render && !r.paused);
-  });
+  };
+  if (!has_work()) {
+    sleeping_ = true;
+    idle_.notify_all();
+    wake_.wait(lock, has_work);
+    sleeping_ = false;
+  }
   if (r.stop) return {.stop = true};
   superseded_.store(false);  // under the lock: a submit() after this sets it again
   // The cancels of the requests taken here have done their work; a request after this

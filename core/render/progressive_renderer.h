@@ -97,6 +97,9 @@ class ProgressiveRenderer {
   // Waits until the generation passes `after` or the deadline comes; true for a
   // new snapshot. Lets a UI without vsync draw an image as soon as it exists.
   bool wait_for_generation(uint64_t after, std::chrono::steady_clock::time_point deadline) const;
+  // Waits until the worker sleeps for want of a request (paused, or finished, with any
+  // pass in flight landed) or the deadline comes; true when it does.
+  bool wait_until_idle(std::chrono::steady_clock::time_point deadline) const;
   std::shared_ptr<const ViewportSnapshot> latest() const;
   // The newest compiled scene (for picking on the UI thread; it is immutable).
   std::shared_ptr<const RenderScene> scene() const;
@@ -144,6 +147,7 @@ class ProgressiveRenderer {
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   mutable std::condition_variable published_;
+  mutable std::condition_variable idle_;
   std::thread worker_;
 
   // Shared with the UI under mutex_.
@@ -153,6 +157,7 @@ class ProgressiveRenderer {
   std::shared_ptr<const ViewportSnapshot> latest_;
   std::shared_ptr<const RenderScene> scene_;  // written by the worker only
   uint64_t generation_ = 0;
+  bool sleeping_ = false;  // the worker waits in take() with nothing to do
 
   // Worker-only state.
   Requests taken_;          // the requests as the worker last took them

@@ -126,7 +126,8 @@ TEST(ProgressiveRendererLife, PausedPublishesNothingAndResumes) {
 
   renderer.set_paused(true);
   EXPECT_TRUE(renderer.paused());
-  std::this_thread::sleep_for(50ms);  // a pass in flight may still land
+  // A pass in flight lands and publishes; then the worker sleeps however slow it runs.
+  ASSERT_TRUE(renderer.wait_until_idle(Clock::now() + 60s));
   const uint64_t paused_at = renderer.generation();
   std::this_thread::sleep_for(200ms);
   EXPECT_EQ(renderer.generation(), paused_at);
