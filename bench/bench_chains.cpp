@@ -41,18 +41,12 @@ int main(int argc, char** argv) {
     } else
       scene_file = a;
   }
-  SceneDesc desc = bench::load_scene_or_exit(scene_file);
-  desc.render.width = width, desc.render.height = height;
-  const CompileResult c = compile_scene(desc);
-  if (!c.scene) {
-    std::fprintf(stderr, "error: %s\n", c.errors.front().c_str());
-    return 1;
-  }
+  const std::shared_ptr<const RenderScene> scene = bench::compile_at_size_or_exit(scene_file, width, height);
   RenderSession session(threads);
-  session.set_scene(c.scene);
+  session.set_scene(scene);
   render_batch(session, {spp, 0.0});
   const Film& film = session.film();
-  const ResolveSettings& styled = c.scene->resolve;
+  const ResolveSettings& styled = scene->resolve;
   ResolveSettings plain = styled;
   plain.sets.clear();
 
